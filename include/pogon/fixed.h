@@ -1,0 +1,245 @@
+/* pogon/fixed.h — Q16.16 fixed-point scalars, 2D vectors and rotations.
+ *
+ * Everything here is integer arithmetic with fully defined behaviour, so a
+ * computation gives the same bits on every compiler, optimisation level and CPU.
+ *
+ * NUMBER FORMATS
+ *   pg_fix    Q16.16 in an int32_t: 16 integer bits (with sign), 16 fraction bits.
+ *             Legal range is SYMMETRIC: [-PG_FIX_MAX, PG_FIX_MAX], about ±32767.99998,
+ *             resolution 2^-16 ≈ 1.5e-5. INT32_MIN is never produced by any function
+ *             here; it is not a pg_fix value (negating it would overflow).
+ *   pg_angle  a binary angle in a uint32_t: a full turn is 2^32, so angles wrap for
+ *             free (unsigned overflow is defined in C) and never drift.
+ *   pg_rot    a rotation as cosine and sine in Q2.30 (int32_t, 1.0 = 2^30): the trig
+ *             table is precise enough that the extra bits are real, so rotated vertices
+ *             keep their shape.
+ *
+ * THE ROUNDING RULE (the only one in pogon)
+ *   Every operation that drops bits rounds to nearest, ties away from zero.
+ *   The rule is symmetric in sign: f(-x) == -f(x). A bias that always pushes one way
+ *   makes resting bodies creep, so pogon never truncates toward -infinity on values
+ *   that can be negative. See pg__round_shift64().
+ *
+ * OVERFLOW
+ *   Scalar operations SATURATE: a result that does not fit becomes ±PG_FIX_MAX.
+ *   The *_checked variants return 0 when the exact (rounded) result fits and a nonzero
+ *   PG_FIX_* status when it saturated, so callers that must know can find out.
+ *   Vector helpers assume components in the legal range (they never see INT32_MIN).
+ *
+ * PLATFORM REQUIREMENTS, pinned by compile-time checks below
+ *   two's complement int32_t/int64_t (C99 guarantees it for exact-width types) and
+ *   arithmetic right shift of negative signed values (implementation-defined in C99;
+ *   every compiler pogon supports does it, and the check refuses to build otherwise).
+ */
+#ifndef POGON_FIXED_H
+#define POGON_FIXED_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef int32_t pg_fix;
+typedef uint32_t pg_angle;
+typedef struct pg_vec2 { pg_fix x, y; } pg_vec2;
+typedef struct pg_rot { int32_t c, s; } pg_rot;  /* Q2.30 cosine and sine */
+typedef struct pg_mat22 { pg_vec2 col1, col2; } pg_mat22;
+
+#define PG_FIX_SHIFT 16
+#define PG_FIX_ONE ((pg_fix)0x10000)
+#define PG_FIX_HALF ((pg_fix)0x8000)
+#define PG_FIX_MAX ((pg_fix)INT32_MAX)
+#define PG_FIX_MIN ((pg_fix)(-INT32_MAX)) /* symmetric: -PG_FIX_MAX */
+#define PG_FIX_EPS ((pg_fix)1)            /* one LSB, 2^-16 */
+#define PG_FIX_PI ((pg_fix)205887)        /* round(pi * 2^16) */
+#define PG_FIX_TWO_PI ((pg_fix)411775)    /* round(2 pi * 2^16) */
+#define PG_FIX_HALF_PI ((pg_fix)102944)   /* round(pi/2 * 2^16) */
+#define PG_ROT_ONE ((int32_t)0x40000000)  /* 1.0 in Q2.30 */
+#define PG_ANGLE_QUARTER ((pg_angle)0x40000000u)
+#define PG_ANGLE_HALF ((pg_angle)0x80000000u)
+
+/* Integer literal helper: PG_FIX_C(3) is 3.0. For fractions use pg_fix_from_ratio or
+ * pg_fix_parse; there is deliberately no float conversion in the library. */
+#define PG_FIX_C(i) ((pg_fix)((i) * 65536))
+
+/* Status of the *_checked functions and of parsing. */
+typedef enum pg_fix_status {
+    PG_FIX_OK = 0,
+    PG_FIX_OVERFLOW = 1,   /* result saturated to +-PG_FIX_MAX */
+    PG_FIX_DIV_ZERO = 2,   /* division by zero; result saturated (0/0 gives 0) */
+    PG_FIX_DOMAIN = 3,     /* e.g. sqrt of a negative number; result is 0 */
+    PG_FIX_SYNTAX = 4      /* malformed decimal text */
+} pg_fix_status;
+
+/* A name and an actionable message for a status value. */
+const char *pg_fix_status_message(pg_fix_status status);
+
+/* ---- compile-time checks on the platform ---------------------------------- */
+#define PG__STATIC_ASSERT(cond, name) typedef char pg__static_assert_##name[(cond) ? 1 : -1]
+PG__STATIC_ASSERT((-1 >> 1) == -1, arithmetic_shift_int);
+PG__STATIC_ASSERT((((int64_t)-1) >> 1) == -1, arithmetic_shift_int64);
+PG__STATIC_ASSERT(((int64_t)-7) / 2 == -3, division_truncates_toward_zero);
+PG__STATIC_ASSERT(sizeof(pg_fix) == 4 && sizeof(pg_angle) == 4, widths);
+
+/* ---- rounding primitives (the rounding rule, written once) ---------------- */
+
+/* x / 2^n rounded to nearest, ties away from zero. 1 <= n <= 62.
+ * Requires |x| + 2^(n-1) <= INT64_MAX, true for every caller in pogon. */
+static inline int64_t pg__round_shift64(int64_t x, int n)
+{
+    int64_t half = (int64_t)1 << (n - 1);
+    return (x + half - (int64_t)(x < 0)) >> n;
+}
+
+/* Clamp an int64 to the legal pg_fix range. */
+static inline pg_fix pg__sat64(int64_t x)
+{
+    return x > (int64_t)PG_FIX_MAX ? PG_FIX_MAX : x < (int64_t)PG_FIX_MIN ? PG_FIX_MIN : (pg_fix)x;
+}
+
+/* ---- conversion ------------------------------------------------------------ */
+static inline pg_fix pg_fix_from_int(int32_t i) { return pg__sat64((int64_t)i * 65536); }
+
+/* i rounded to the nearest integer (ties away from zero). */
+static inline int32_t pg_fix_to_int(pg_fix a) { return (int32_t)pg__round_shift64(a, 16); }
+
+/* num/den as Q16.16, rounded; saturates; den == 0 saturates by the sign of num. */
+pg_fix pg_fix_from_ratio(int64_t num, int64_t den);
+
+/* Parse exact decimal text: [+|-]digits[.digits] or [+|-].digits, nothing else (no
+ * spaces, no exponent). Any number of digits; the result is the correctly rounded
+ * Q16.16 value (ties away from zero). `len` bytes are read; the text need not be
+ * NUL-terminated. Returns PG_FIX_SYNTAX for malformed text (and *out = 0),
+ * PG_FIX_OVERFLOW when the value is beyond +-PG_FIX_MAX (and *out saturated). */
+pg_fix_status pg_fix_parse(const char *text, size_t len, pg_fix *out);
+
+/* Shortest decimal text that pg_fix_parse turns back into `a` (at most 5 fraction
+ * digits, e.g. "-12.375", "0.1", "3"). Writes at most `size` bytes including the
+ * terminating NUL; returns the length it needs without the NUL (snprintf-style).
+ * PG_FIX_FORMAT_MAX bytes are always enough. */
+#define PG_FIX_FORMAT_MAX 16
+size_t pg_fix_format(pg_fix a, char *buf, size_t size);
+
+/* ---- scalar arithmetic (all saturating) ------------------------------------ */
+static inline pg_fix pg_fix_add(pg_fix a, pg_fix b) { return pg__sat64((int64_t)a + b); }
+static inline pg_fix pg_fix_sub(pg_fix a, pg_fix b) { return pg__sat64((int64_t)a - b); }
+static inline pg_fix pg_fix_neg(pg_fix a) { return pg__sat64(-(int64_t)a); }
+static inline pg_fix pg_fix_abs(pg_fix a) { return pg__sat64(a < 0 ? -(int64_t)a : (int64_t)a); }
+static inline pg_fix pg_fix_min(pg_fix a, pg_fix b) { return a < b ? a : b; }
+static inline pg_fix pg_fix_max(pg_fix a, pg_fix b) { return a > b ? a : b; }
+static inline pg_fix pg_fix_clamp(pg_fix a, pg_fix lo, pg_fix hi) { return a < lo ? lo : a > hi ? hi : a; }
+
+/* a*b with a 64-bit product, rounded once. */
+static inline pg_fix pg_fix_mul(pg_fix a, pg_fix b)
+{
+    return pg__sat64(pg__round_shift64((int64_t)a * b, 16));
+}
+
+/* a/b rounded; b == 0 gives +PG_FIX_MAX for a > 0, PG_FIX_MIN for a < 0, 0 for a == 0. */
+pg_fix pg_fix_div(pg_fix a, pg_fix b);
+
+pg_fix_status pg_fix_add_checked(pg_fix a, pg_fix b, pg_fix *out);
+pg_fix_status pg_fix_sub_checked(pg_fix a, pg_fix b, pg_fix *out);
+pg_fix_status pg_fix_mul_checked(pg_fix a, pg_fix b, pg_fix *out);
+pg_fix_status pg_fix_div_checked(pg_fix a, pg_fix b, pg_fix *out);
+
+/* Correctly rounded square root (nearest; there are no ties). sqrt of a negative
+ * value is 0 (pg_fix_sqrt_checked reports PG_FIX_DOMAIN). */
+pg_fix pg_fix_sqrt(pg_fix a);
+pg_fix_status pg_fix_sqrt_checked(pg_fix a, pg_fix *out);
+
+/* 1/a, rounded, saturating (pg_fix_div(PG_FIX_ONE, a)). */
+pg_fix pg_fix_recip(pg_fix a);
+
+/* Integer square root of a 64-bit value, floor. Used for lengths of int64 sums. */
+uint32_t pg_isqrt64(uint64_t v);
+
+/* ---- angles and trigonometry ------------------------------------------------ */
+
+/* Radians (Q16.16) to a binary angle, modulo a full turn. */
+pg_angle pg_angle_from_radians(pg_fix radians);
+/* A binary angle to radians in [-pi, pi). */
+pg_fix pg_angle_to_radians(pg_angle a);
+/* Wrap radians into [-pi, pi). */
+pg_fix pg_fix_wrap_angle(pg_fix radians);
+
+/* Sine and cosine in Q2.30 from the lookup table with linear interpolation. The table
+ * size is PG_TRIG_TABLE_BITS (config.h). */
+int32_t pg_angle_sin_q30(pg_angle a);
+int32_t pg_angle_cos_q30(pg_angle a);
+pg_fix pg_fix_sin(pg_fix radians);
+pg_fix pg_fix_cos(pg_fix radians);
+
+/* atan2 by integer CORDIC: the binary angle of the vector (x, y); (0, 0) gives 0.
+ * Error below 2^-20 turn for any inputs. */
+pg_angle pg_angle_atan2(pg_fix y, pg_fix x);
+/* The same in radians, in [-pi, pi). */
+pg_fix pg_fix_atan2(pg_fix y, pg_fix x);
+
+/* ---- 2D vectors -------------------------------------------------------------- */
+static inline pg_vec2 pg_v2(pg_fix x, pg_fix y) { pg_vec2 v; v.x = x; v.y = y; return v; }
+static inline pg_vec2 pg_v2_zero(void) { return pg_v2(0, 0); }
+static inline pg_vec2 pg_v2_add(pg_vec2 a, pg_vec2 b) { return pg_v2(pg_fix_add(a.x, b.x), pg_fix_add(a.y, b.y)); }
+static inline pg_vec2 pg_v2_sub(pg_vec2 a, pg_vec2 b) { return pg_v2(pg_fix_sub(a.x, b.x), pg_fix_sub(a.y, b.y)); }
+static inline pg_vec2 pg_v2_neg(pg_vec2 a) { return pg_v2(pg_fix_neg(a.x), pg_fix_neg(a.y)); }
+static inline pg_vec2 pg_v2_scale(pg_vec2 v, pg_fix s) { return pg_v2(pg_fix_mul(v.x, s), pg_fix_mul(v.y, s)); }
+static inline int pg_v2_equal(pg_vec2 a, pg_vec2 b) { return a.x == b.x && a.y == b.y; }
+
+/* dot and cross products: the 64-bit sum of products is rounded once. */
+static inline pg_fix pg_v2_dot(pg_vec2 a, pg_vec2 b)
+{
+    return pg__sat64(pg__round_shift64((int64_t)a.x * b.x + (int64_t)a.y * b.y, 16));
+}
+static inline pg_fix pg_v2_cross(pg_vec2 a, pg_vec2 b)
+{
+    return pg__sat64(pg__round_shift64((int64_t)a.x * b.y - (int64_t)a.y * b.x, 16));
+}
+/* s x v = (-s*v.y, s*v.x): angular velocity times a lever arm. */
+static inline pg_vec2 pg_v2_cross_sv(pg_fix s, pg_vec2 v) { return pg_v2(pg_fix_neg(pg_fix_mul(s, v.y)), pg_fix_mul(s, v.x)); }
+/* v x s = (s*v.y, -s*v.x) */
+static inline pg_vec2 pg_v2_cross_vs(pg_vec2 v, pg_fix s) { return pg_v2(pg_fix_mul(s, v.y), pg_fix_neg(pg_fix_mul(s, v.x))); }
+/* Counter-clockwise perpendicular (-y, x) and clockwise (y, -x). */
+static inline pg_vec2 pg_v2_perp(pg_vec2 v) { return pg_v2(pg_fix_neg(v.y), v.x); }
+static inline pg_vec2 pg_v2_rperp(pg_vec2 v) { return pg_v2(v.y, pg_fix_neg(v.x)); }
+
+/* Length, correctly rounded, saturating. */
+pg_fix pg_v2_length(pg_vec2 v);
+/* Unit vector in the direction of v, each component within 1 LSB of exact.
+ * The zero vector normalises to the zero vector (check with pg_v2_equal). */
+pg_vec2 pg_v2_normalize(pg_vec2 v);
+
+/* ---- rotations ---------------------------------------------------------------- */
+static inline pg_rot pg_rot_identity(void) { pg_rot r; r.c = PG_ROT_ONE; r.s = 0; return r; }
+pg_rot pg_rot_from_angle(pg_angle a);
+
+/* Multiply a Q16.16 component by a Q2.30 factor, rounded. */
+static inline pg_fix pg__mul_q30(pg_fix a, int32_t q30) { return (pg_fix)pg__round_shift64((int64_t)a * q30, 30); }
+
+/* R v and R^T v. Inputs in range give results in range (|R v| = |v|). */
+static inline pg_vec2 pg_rot_apply(pg_rot r, pg_vec2 v)
+{
+    return pg_v2(pg__sat64(pg__round_shift64((int64_t)r.c * v.x - (int64_t)r.s * v.y, 30)),
+                 pg__sat64(pg__round_shift64((int64_t)r.s * v.x + (int64_t)r.c * v.y, 30)));
+}
+static inline pg_vec2 pg_rot_apply_inv(pg_rot r, pg_vec2 v)
+{
+    return pg_v2(pg__sat64(pg__round_shift64((int64_t)r.c * v.x + (int64_t)r.s * v.y, 30)),
+                 pg__sat64(pg__round_shift64((int64_t)r.c * v.y - (int64_t)r.s * v.x, 30)));
+}
+
+/* ---- 2x2 matrices ----------------------------------------------------------------- */
+static inline pg_mat22 pg_mat22_make(pg_vec2 col1, pg_vec2 col2) { pg_mat22 m; m.col1 = col1; m.col2 = col2; return m; }
+static inline pg_vec2 pg_mat22_mul(pg_mat22 m, pg_vec2 v)
+{
+    return pg_v2(pg__sat64(pg__round_shift64((int64_t)m.col1.x * v.x + (int64_t)m.col2.x * v.y, 16)),
+                 pg__sat64(pg__round_shift64((int64_t)m.col1.y * v.x + (int64_t)m.col2.y * v.y, 16)));
+}
+/* Solve m x = b (Cramer's rule, 64-bit); a singular matrix gives the zero vector. */
+pg_vec2 pg_mat22_solve(pg_mat22 m, pg_vec2 b);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
