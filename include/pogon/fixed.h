@@ -46,6 +46,7 @@ typedef uint32_t pg_angle;
 typedef struct pg_vec2 { pg_fix x, y; } pg_vec2;
 typedef struct pg_rot { int32_t c, s; } pg_rot;  /* Q2.30 cosine and sine */
 typedef struct pg_mat22 { pg_vec2 col1, col2; } pg_mat22;
+typedef struct pg_aabb { pg_vec2 lo, hi; } pg_aabb; /* axis-aligned box, lo <= hi */
 
 #define PG_FIX_SHIFT 16
 #define PG_FIX_ONE ((pg_fix)0x10000)

@@ -1,0 +1,65 @@
+/* geom.h (internal) — convex geometry as the narrowphase sees it, and contact manifolds.
+ *
+ * Every primitive is a convex polygon of 1 to PG_MAX_POLYGON_VERTICES vertices with a
+ * radius (the Minkowski sum of the polygon and a disc):
+ *   circle   count 1, radius r           segment  count 2, radius 0
+ *   capsule  count 2, radius r           polygon  count 3..8 (box, triangle, ...), radius 0
+ * Vertices wind counter-clockwise. normals[i] is the outward unit normal of the edge
+ * vertices[i] -> vertices[(i+1) % count]; for count 2 that gives normals[1] == -normals[0];
+ * for count 1 the normals are unused.
+ */
+#ifndef POGON_SRC_GEOM_H
+#define POGON_SRC_GEOM_H
+#include "pogon/fixed.h"
+
+#define PG_MAX_POLYGON_VERTICES 8
+
+/* A unit direction in Q2.30 (1.0 == 2^30). */
+typedef struct pg_dir { int32_t x, y; } pg_dir;
+
+typedef struct pg_geom {
+    pg_vec2 vertices[PG_MAX_POLYGON_VERTICES];
+    pg_dir normals[PG_MAX_POLYGON_VERTICES];
+    pg_vec2 centroid; /* of the polygon's area (or of the vertices for count < 3) */
+    pg_fix radius;
+    int32_t count;
+} pg_geom;
+
+/* Unit vector along (x, y) in Q2.30, exact to about 1 LSB of Q30; zero gives zero. */
+pg_dir pg_dir_normalize(int64_t x, int64_t y);
+
+/* Place a local geometry with a body's transform: world = position + R local. */
+void pg_geom_transform(const pg_geom *local, pg_vec2 position, pg_rot rotation, pg_geom *world);
+
+/* The bounding box of a placed geometry, radius included. */
+pg_aabb pg_geom_aabb(const pg_geom *g);
+
+typedef struct pg_manifold_point {
+    pg_vec2 point;       /* world position, midway between the two surfaces */
+    pg_fix separation;   /* signed distance along the normal; negative means overlap */
+    uint32_t id;         /* feature key: the same while the same features touch */
+} pg_manifold_point;
+
+typedef struct pg_manifold {
+    pg_dir normal;       /* unit, Q2.30, pointing from shape A to shape B */
+    pg_manifold_point points[2];
+    int32_t count;       /* 0, 1 or 2 */
+} pg_manifold;
+
+/* The contact manifold of a and b: the points whose separation is at most
+ * `speculative` (>= 0) are reported. count == 0 when they are farther apart. */
+void pg_collide(const pg_geom *a, const pg_geom *b, pg_fix speculative, pg_manifold *out);
+
+/* Signed distance-style overlap test used by queries: nonzero when a and b overlap
+ * (separation < 0). */
+int pg_geom_overlap(const pg_geom *a, const pg_geom *b);
+
+/* Ray cast against one geometry: origin p, direction d (any length, not zero),
+ * maximum fraction max_t of d (Q16.16, e.g. PG_FIX_ONE for the segment p..p+d).
+ * Returns nonzero on a hit with the fraction *t, the point and the outward normal. */
+int pg_geom_raycast(const pg_geom *g, pg_vec2 p, pg_vec2 d, pg_fix max_t, pg_fix *t, pg_vec2 *point, pg_dir *normal);
+
+/* Does the geometry contain the point (radius included)? */
+int pg_geom_contains(const pg_geom *g, pg_vec2 p);
+
+#endif
