@@ -3,7 +3,8 @@
 #
 # Usage: scripts/check-no-float.sh LIBRARY [OBJDUMP]
 #   LIBRARY  the static (.a) or shared (.so) library, or an object file
-#   OBJDUMP  the objdump to use (default: objdump)
+#   OBJDUMP  the objdump to use (default: objdump); GNU objdump and llvm-objdump
+#            output are both understood
 #
 # Fails (exit 1) when the x86-64 disassembly contains
 #   - an x87 instruction (every x87 mnemonic starts with "f": fld, fstp, fmul, ...),
@@ -64,10 +65,11 @@ file ~ /dis$/ {
     if (softfloat(sym)) { printf "%s %s: reference to %s\n", member, fn, sym; bad++ }
     next
   }
-  if ($0 !~ /^ *[0-9a-f]+:$/ && $1 !~ /^ *[0-9a-f]+:$/) next
-  if (NF < 2) next
+  # instruction line: GNU "   1f:\tmov    %eax,%ebx", LLVM "      1f:      \tmovl\t%eax, %ebx"
+  if ($1 !~ /^ *[0-9a-f]+: *$/ || NF < 2) next
   text = $2
-  n = split(text, w, / +/)
+  for (j = 3; j <= NF; j++) text = text " " $j
+  n = split(text, w, /[ ]+/)
   i = 1
   while (i <= n && w[i] ~ /^(lock|rep|repz|repnz|repe|repne|data16|data32|addr16|addr32|cs|ds|es|fs|gs|ss|notrack|bnd|xacquire|xrelease|rex(\.[WRXB]+)?|\{[a-z0-9]+\})$/) i++
   if (i > n) next

@@ -121,7 +121,7 @@ const char *pg_fix_status_message(pg_fix_status status)
     case PG_FIX_OVERFLOW: return "PG_FIX_OVERFLOW: result beyond +-32767.99998, saturated; scale the inputs down";
     case PG_FIX_DIV_ZERO: return "PG_FIX_DIV_ZERO: division by zero, result saturated by the sign of the dividend";
     case PG_FIX_DOMAIN: return "PG_FIX_DOMAIN: argument outside the function's domain (e.g. sqrt of a negative)";
-    case PG_FIX_SYNTAX: return "PG_FIX_SYNTAX: not a decimal number of the form [+|-]digits[.digits]";
+    case PG_FIX_SYNTAX: return "PG_FIX_SYNTAX: not a decimal number [+|-]digits[.digits] (\".5\", \"5.\" accepted; no spaces or exponent)";
     }
     return "unknown pg_fix_status";
 }

@@ -5,13 +5,22 @@
 #include "pogon/fixed.h"
 
 /* sin(a) in Q2.30 from a full-turn table of 2^bits entries, interpolated linearly with
- * all the fraction bits the angle has below the table index. */
+ * all the fraction bits the angle has below the table index.
+ *
+ * The exact interpolant s0 + (s1 - s0) * frac / 2^k is rounded ONCE (k = 32 - bits).
+ * Rounding only the increment, s0 + round((s1 - s0) * frac / 2^k), is not symmetric
+ * under reflection: at a tie, interpolating from the other end (as sin(-a) does) rounds
+ * the other way, and sin(-a) == -sin(a) failed by 1 for a few angles. With one rounding
+ * of the exact value the table's symmetries carry over to every angle, bit for bit:
+ * sin(-a) == -sin(a), sin(a + half) == -sin(a), sin(half - a) == sin(a), cos(-a) == cos(a).
+ * Magnitudes: |s0| * 2^k <= 2^54 and |s1 - s0| * frac < 2^25 * 2^24, so int64 suffices. */
 static inline int32_t pg__table_sin_q30(const int32_t *table, int bits, pg_angle a)
 {
-    uint32_t index = a >> (32 - bits);
+    int k = 32 - bits;
+    uint32_t index = a >> k;
     uint32_t mask = ((uint32_t)1 << bits) - 1u;
-    int64_t frac = (int64_t)(a & ((UINT32_C(1) << (32 - bits)) - 1u));
-    int32_t s0 = table[index], s1 = table[(index + 1u) & mask];
-    return s0 + (int32_t)pg__round_shift64((int64_t)(s1 - s0) * frac, 32 - bits);
+    int64_t frac = (int64_t)(a & ((UINT32_C(1) << k) - 1u));
+    int64_t s0 = table[index], s1 = table[(index + 1u) & mask];
+    return (int32_t)pg__round_shift64(s0 * ((int64_t)1 << k) + (s1 - s0) * frac, k);
 }
 #endif

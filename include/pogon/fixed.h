@@ -10,9 +10,13 @@
  *             here; it is not a pg_fix value (negating it would overflow).
  *   pg_angle  a binary angle in a uint32_t: a full turn is 2^32, so angles wrap for
  *             free (unsigned overflow is defined in C) and never drift.
- *   pg_rot    a rotation as cosine and sine in Q2.30 (int32_t, 1.0 = 2^30): the trig
- *             table is precise enough that the extra bits are real, so rotated vertices
- *             keep their shape.
+ *   pg_rot    a rotation as cosine and sine in Q2.30 (int32_t, 1.0 = 2^30), so applying
+ *             it adds no rounding of its own beyond the final one. The pair carries the
+ *             sine table's interpolation error: (c, s) lies on a chord of the unit
+ *             circle, so | |R| - 1 | <= (2 pi / 2^bits)^2 / 8 + 2^-29 (4.7e-6 with the
+ *             default 10-bit table): R is a rotation times a uniform
+ *             scale within that of 1, so rotated shapes keep their shape up to that scale,
+ *             and R^T (R v) returns v scaled by |R|^2 (tests/unit/test_trig.c).
  *
  * THE ROUNDING RULE (the only one in pogon)
  *   Every operation that drops bits rounds to nearest, ties away from zero.
@@ -109,8 +113,8 @@ static inline int32_t pg_fix_to_int(pg_fix a) { return (int32_t)pg__round_shift6
 /* num/den as Q16.16, rounded; saturates; den == 0 saturates by the sign of num. */
 pg_fix pg_fix_from_ratio(int64_t num, int64_t den);
 
-/* Parse exact decimal text: [+|-]digits[.digits] or [+|-].digits, nothing else (no
- * spaces, no exponent). Any number of digits; the result is the correctly rounded
+/* Parse exact decimal text: [+|-]digits[.digits], [+|-].digits or [+|-]digits. (so
+ * ".5" and "5." are accepted), nothing else (no spaces, no exponent, no "." alone). Any number of digits; the result is the correctly rounded
  * Q16.16 value (ties away from zero). `len` bytes are read; the text need not be
  * NUL-terminated. Returns PG_FIX_SYNTAX for malformed text (and *out = 0),
  * PG_FIX_OVERFLOW when the value is beyond +-PG_FIX_MAX (and *out saturated). */
@@ -161,7 +165,8 @@ uint32_t pg_isqrt64(uint64_t v);
 
 /* Radians (Q16.16) to a binary angle, modulo a full turn. */
 pg_angle pg_angle_from_radians(pg_fix radians);
-/* A binary angle to radians in [-pi, pi). */
+/* A binary angle to radians in [-pi, pi): in Q16.16 that is [-PG_FIX_PI, PG_FIX_PI]
+ * (PG_FIX_PI < pi), half a turn giving -PG_FIX_PI. */
 pg_fix pg_angle_to_radians(pg_angle a);
 /* Wrap radians into [-pi, pi). */
 pg_fix pg_fix_wrap_angle(pg_fix radians);

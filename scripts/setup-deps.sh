@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# setup-deps.sh — install the Debian packages pogon's builds and tests need.
+#
+# Usage: scripts/setup-deps.sh [--check] [GROUP...]
+#   GROUP    one or more of the groups below; default: the groups scripts/test.sh
+#            and scripts/demo.sh need (build test)
+#   --check  only report what is missing; exit 1 if anything is
+#
+# Idempotent: packages already installed (dpkg says "install ok installed") are left
+# alone, and when nothing is missing apt is not touched at all. Otherwise it runs
+# `apt-get update` once and installs only the missing packages, non-interactively.
+# Works as root, or through sudo for another user.
+#
+# TO ADD A PACKAGE: add a line "group|package|why it is needed" to PACKAGES below. A new
+# group is installed only when named on the command line, or after it is added to
+# DEFAULT_GROUPS (do that when scripts/test.sh starts to need it).
+set -euo pipefail
+
+PACKAGES=(
+  # --- build: compile the library, the examples and the tools -----------------------
+  "build|gcc|the default C compiler (gcc 12 also ships the ASan/UBSan runtimes of the debug-asan preset)"
+  "build|libc6-dev|C library headers and crt files for linking programs"
+  "build|make|the generator CMake uses by default (Unix Makefiles)"
+  "build|cmake|the build system; CMakePresets.json (schema 6) needs 3.25, Debian bookworm has 3.25"
+  "build|pkg-config|the consumer test compiles against the installed pogon.pc"
+  "build|binutils|objdump, for the no_float_in_library test that disassembles the library"
+  # --- test: the unit tests and the second compiler ----------------------------------
+  "test|libcmocka-dev|unit-test framework (CMocka 1.1.5) for the tests in tests/"
+  "test|clang|the second compiler (clang preset): warnings and gcc-vs-clang determinism"
+  # --- optional groups for later work: install with e.g. scripts/setup-deps.sh wasm ---
+  "wasm|emscripten|WebAssembly build (emscripten preset); needs NODE_PATH=/usr/share/nodejs"
+  "cross|gcc-arm-linux-gnueabihf|32-bit ARM cross compiler, for determinism on another ISA"
+  "cross|gcc-s390x-linux-gnu|big-endian cross compiler (s390x)"
+  "cross|qemu-user|runs the static ARM and s390x test programs (qemu-arm, qemu-s390x)"
+  "cortex-m|gcc-arm-none-eabi|bare-metal Cortex-M compiler"
+  "cortex-m|libnewlib-arm-none-eabi|C library for the Cortex-M firmware"
+  "cortex-m|qemu-system-arm|runs the firmware on the mps2-an385 (Cortex-M3) board"
+  "peers|libbox2d-dev|Box2D 2.4.1, a float peer for the benchmarks"
+  "peers|libchipmunk-dev|Chipmunk2D 7.0.3, a float peer for the benchmarks"
+)
+DEFAULT_GROUPS=(build test)
+
+check_only=0
+groups=()
+for arg in "$@"; do
+  case $arg in
+    --check) check_only=1 ;;
+    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+    -*) echo "setup-deps: unknown option $arg" >&2; exit 2 ;;
+    *) groups+=("$arg") ;;
+  esac
+done
+if [ ${#groups[@]} -eq 0 ]; then groups=("${DEFAULT_GROUPS[@]}"); fi
+
+known_groups=" "
+for entry in "${PACKAGES[@]}"; do known_groups+="${entry%%|*} "; done
+for g in "${groups[@]}"; do
+  case $known_groups in
+    *" $g "*) ;;
+    *) echo "setup-deps: unknown group '$g' (known: $(tr ' ' '\n' <<<"$known_groups" | sort -u | xargs))" >&2; exit 2 ;;
+  esac
+done
+
+installed() {
+  [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" = "install ok installed" ]
+}
+
+wanted=()
+missing=()
+for entry in "${PACKAGES[@]}"; do
+  group=${entry%%|*}
+  rest=${entry#*|}
+  pkg=${rest%%|*}
+  for g in "${groups[@]}"; do
+    if [ "$g" = "$group" ]; then
+      wanted+=("$pkg")
+      installed "$pkg" || missing+=("$pkg")
+    fi
+  done
+done
+
+echo "setup-deps: groups: ${groups[*]}; ${#wanted[@]} packages, ${#missing[@]} missing${missing[*]:+: ${missing[*]}}"
+if [ ${#missing[@]} -eq 0 ]; then exit 0; fi
+if [ "$check_only" -eq 1 ]; then exit 1; fi
+
+if ! command -v apt-get >/dev/null 2>&1; then
+  echo "setup-deps: apt-get not found: install these packages by hand: ${missing[*]}" >&2
+  exit 1
+fi
+as_root=()
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then
+    as_root=(sudo)
+  else
+    echo "setup-deps: not root and no sudo: install these packages as root: ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+# Wait for a concurrent apt/dpkg run instead of failing on its lock.
+apt_opts=(-o DPkg::Lock::Timeout=600 -o Acquire::Retries=3)
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get "${apt_opts[@]}" update -q
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get "${apt_opts[@]}" install -y -q \
+  --no-install-recommends "${missing[@]}"
+
+still=()
+for pkg in "${missing[@]}"; do installed "$pkg" || still+=("$pkg"); done
+if [ ${#still[@]} -ne 0 ]; then
+  echo "setup-deps: still missing after apt-get install: ${still[*]}" >&2
+  exit 1
+fi
+echo "setup-deps: installed ${missing[*]}"

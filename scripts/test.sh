@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# test.sh — THE test command: every test of pogon, from a fresh Debian machine.
+#
+# Usage: scripts/test.sh [PRESET...]     (default: release debug-asan clang)
+#
+# Installs what is missing (scripts/setup-deps.sh), then for each CMake preset
+# configures, builds and runs ctest (--output-on-failure). A failing preset does not
+# stop the others; the script exits 1 if any stage of any preset failed. The last line
+# is the total over all presets: "pogon: N passed, N failed" (a preset that fails to
+# configure or build counts as one failure).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+presets=("$@")
+if [ ${#presets[@]} -eq 0 ]; then presets=(release debug-asan clang); fi
+jobs=$(nproc 2>/dev/null || echo 2)
+start=$(date +%s)
+
+stage() { printf '\n==== [%s +%ss] %s\n' "$(date +%H:%M:%S)" "$(( $(date +%s) - start ))" "$*"; }
+
+stage "setup: scripts/setup-deps.sh"
+scripts/setup-deps.sh
+
+mkdir -p build
+passed=0
+failed=0
+summary=()
+status=0
+for preset in "${presets[@]}"; do
+  log="build/ctest-$preset.log"
+  stage "$preset: configure (cmake --preset $preset)"
+  if ! cmake --preset "$preset"; then
+    summary+=("$preset: configure FAILED"); status=1; failed=$(( failed + 1 )); continue
+  fi
+  stage "$preset: build (cmake --build --preset $preset)"
+  if ! cmake --build --preset "$preset" --parallel "$jobs"; then
+    summary+=("$preset: build FAILED"); status=1; failed=$(( failed + 1 )); continue
+  fi
+  stage "$preset: test (ctest --preset $preset)"
+  rc=0
+  ctest --preset "$preset" --output-on-failure --parallel "$jobs" 2>&1 | tee "$log" || rc=$?
+  # "100% tests passed, 0 tests failed out of 12"
+  line=$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1 || true)
+  if [ -n "$line" ]; then
+    total=$(sed -E 's/.* out of ([0-9]+).*/\1/' <<<"$line")
+    nfail=$(sed -E 's/.*passed, ([0-9]+) tests? failed.*/\1/' <<<"$line")
+    passed=$(( passed + total - nfail ))
+    failed=$(( failed + nfail ))
+  fi
+  if [ "$rc" -ne 0 ]; then
+    summary+=("$preset: tests FAILED (${line:-ctest exit $rc})"); status=1
+    [ -n "$line" ] || failed=$(( failed + 1 ))
+  else
+    summary+=("$preset: ok (${line:-no summary})")
+  fi
+done
+
+stage "summary ($(( $(date +%s) - start )) s)"
+printf '  %s\n' "${summary[@]}"
+if [ "$status" -ne 0 ]; then echo "FAILED: see the output above"; else echo "all presets passed"; fi
+echo "pogon: $passed passed, $failed failed"
+exit "$status"

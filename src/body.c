@@ -1,0 +1,500 @@
+/* body.c — the body pool, mass from shapes, getters, setters, forces and impulses. */
+#include "mass.h"
+#include "wide.h"
+#include "world_internal.h"
+
+pg_body_def pg_default_body_def(void)
+{
+    pg_body_def d;
+    d.type = PG_BODY_STATIC;
+    d.position = pg_v2_zero();
+    d.angle = 0;
+    d.linear_velocity = pg_v2_zero();
+    d.angular_velocity = 0;
+    d.linear_damping = 0;
+    d.angular_damping = 0;
+    d.gravity_scale = PG_FIX_ONE;
+    d.fixed_rotation = 0;
+    d.allow_sleep = 1;
+    d.awake = 1;
+    d.user_data = 0;
+    return d;
+}
+
+int pg__body_is_active(const pg_body *b)
+{
+    return (b->flags & (PG_BODY_FLAG_USED | PG_BODY_FLAG_AWAKE)) == (PG_BODY_FLAG_USED | PG_BODY_FLAG_AWAKE) &&
+           b->type != PG_BODY_STATIC;
+}
+
+static int in_position_envelope(pg_vec2 p)
+{
+    return p.x >= -PG_ENV_MAX_POSITION && p.x <= PG_ENV_MAX_POSITION && p.y >= -PG_ENV_MAX_POSITION && p.y <= PG_ENV_MAX_POSITION;
+}
+
+static pg_result check_speed(const pg_world *world, pg_vec2 v)
+{
+    pg_fix cap = world->def.max_linear_speed;
+    if (v.x < -cap || v.x > cap || v.y < -cap || v.y > cap)
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "velocity component", v.x < -cap || v.x > cap ? v.x : v.y,
+                              "m/s exceeds the world's max_linear_speed");
+    return PG_OK;
+}
+
+static pg_result check_body_def(const pg_world *world, const pg_body_def *d)
+{
+    pg_result r;
+    if (d->type != PG_BODY_STATIC && d->type != PG_BODY_KINEMATIC && d->type != PG_BODY_DYNAMIC)
+        return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
+    if (!in_position_envelope(d->position))
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "position component", d->position.x < -PG_ENV_MAX_POSITION || d->position.x > PG_ENV_MAX_POSITION ? d->position.x : d->position.y, "m is outside +-1000 m");
+    r = check_speed(world, d->linear_velocity);
+    if (r != PG_OK) return r;
+    if (d->angular_velocity < -PG_FIX_C(1000) || d->angular_velocity > PG_FIX_C(1000))
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "angular_velocity", d->angular_velocity, "rad/s is outside +-1000 rad/s");
+    if (d->linear_damping < 0 || d->linear_damping > PG_FIX_C(1000) || d->angular_damping < 0 || d->angular_damping > PG_FIX_C(1000))
+        return pg__fail(world, PG_ERR_ENVELOPE, "damping must be 0..1000 per second");
+    if (d->gravity_scale < -PG_FIX_C(100) || d->gravity_scale > PG_FIX_C(100))
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "gravity_scale", d->gravity_scale, "is outside -100..100");
+    return PG_OK;
+}
+
+pg_result pg_body_create(pg_world *world, const pg_body_def *def, pg_body_id *out)
+{
+    uint32_t i;
+    pg_body *b;
+    pg_result r;
+    if (out != NULL) out->index = 0, out->generation = 0;
+    if (world == NULL || def == NULL || out == NULL) return PG_ERR_NULL;
+    r = check_body_def(world, def);
+    if (r != PG_OK) return r;
+    /* The lowest free slot: the pool's state is then just "which slots are used",
+     * with no free list whose order would have to be saved. */
+    for (i = 0; i < world->def.max_bodies; ++i)
+        if ((world->bodies[i].flags & PG_BODY_FLAG_USED) == 0) break;
+    if (i == world->def.max_bodies) return pg__fail(world, PG_ERR_CAPACITY, "max_bodies reached");
+    b = &world->bodies[i];
+    {
+        uint32_t generation = b->generation + 1u;
+        pg_body zero;
+        unsigned char *p = (unsigned char *)&zero;
+        size_t k;
+        for (k = 0; k < sizeof zero; ++k) p[k] = 0;
+        *b = zero;
+        b->generation = generation == 0 ? 1u : generation;
+    }
+    b->flags = PG_BODY_FLAG_USED | PG_BODY_FLAG_GEOMETRY_DIRTY;
+    if (def->fixed_rotation) b->flags |= PG_BODY_FLAG_FIXED_ROTATION;
+    if (def->allow_sleep) b->flags |= PG_BODY_FLAG_ALLOW_SLEEP;
+    if (def->awake || def->type == PG_BODY_KINEMATIC || (world->def.effects & PG_EFFECT_SLEEPING) == 0) b->flags |= PG_BODY_FLAG_AWAKE;
+    b->type = def->type;
+    b->origin = def->position;
+    b->center = def->position;
+    b->angle = def->angle;
+    b->rot = pg_rot_from_angle(def->angle);
+    if (def->type != PG_BODY_STATIC) {
+        b->v = def->linear_velocity;
+        b->w = def->fixed_rotation ? 0 : def->angular_velocity;
+    }
+    b->linear_damping = def->linear_damping;
+    b->angular_damping = def->angular_damping;
+    b->gravity_scale = def->gravity_scale;
+    b->first_shape = PG_NULL_INDEX;
+    b->island = PG_NULL_INDEX;
+    b->user_data = def->user_data;
+    if (def->type == PG_BODY_DYNAMIC) { /* a dynamic body without shapes weighs 1 kg */
+        b->mass = INT64_C(1) << 32;
+        b->inv_mass = INT64_C(1) << 38;
+    }
+    if (i >= world->body_high) world->body_high = i + 1u;
+    world->body_count += 1u;
+    out->index = i;
+    out->generation = b->generation;
+    return PG_OK;
+}
+
+pg_result pg_body_destroy(pg_world *world, pg_body_id id)
+{
+    pg_body *b = pg__body(world, id);
+    uint32_t s, next;
+    if (world == NULL) return PG_ERR_NULL;
+    if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_body_destroy: body handle is stale or invalid");
+    pg__remove_body_contacts(world, id.index);
+    for (s = b->first_shape; s != PG_NULL_INDEX; s = next) {
+        next = world->shapes[s].next;
+        world->shapes[s].used = 0;
+        world->shape_count -= 1u;
+    }
+    b->flags = 0;
+    b->first_shape = PG_NULL_INDEX;
+    world->body_count -= 1u;
+    while (world->body_high > 0 && (world->bodies[world->body_high - 1u].flags & PG_BODY_FLAG_USED) == 0) world->body_high -= 1u;
+    return PG_OK;
+}
+
+int pg_body_is_valid(const pg_world *world, pg_body_id body) { return pg__body(world, body) != NULL; }
+
+/* ---- mass ------------------------------------------------------------------------------------ */
+void pg__body_update_mass(pg_world *world, uint32_t body_index)
+{
+    pg_body *b = &world->bodies[body_index];
+    const pg_geom *geoms[64];
+    pg_fix densities[64];
+    int n = 0;
+    uint32_t s;
+    pg_mass_data md;
+    b->mass = 0;
+    b->inertia = 0;
+    b->inv_mass = 0;
+    b->inv_inertia = 0;
+    b->local_center = pg_v2_zero();
+    if (b->type != PG_BODY_DYNAMIC) {
+        b->center = b->origin;
+        return;
+    }
+    for (s = b->first_shape; s != PG_NULL_INDEX && n < 64; s = world->shapes[s].next) {
+        geoms[n] = &world->shapes[s].local;
+        densities[n] = world->shapes[s].density;
+        ++n;
+    }
+    md = pg_compound_mass(geoms, densities, n);
+    if (md.mass <= 0) { /* only segments, or density 0: a point of 1 kg */
+        b->mass = INT64_C(1) << 32;
+        b->inv_mass = INT64_C(1) << 38;
+    } else {
+        b->mass = md.mass;
+        b->inv_mass = pg__div64_shl(INT64_C(1) << 32, md.mass, 38); /* 2^70 / mass */
+        b->local_center = md.center;
+        if (md.inertia > 0 && (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0) {
+            b->inertia = md.inertia;
+            b->inv_inertia = pg__div64_shl(INT64_C(1) << 36, md.inertia, 38); /* 2^74 / inertia */
+        } else {
+            b->inertia = md.inertia;
+        }
+    }
+    b->center = pg_v2_add(b->origin, pg_rot_apply(b->rot, b->local_center));
+}
+
+void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
+{
+    pg_body *b = &world->bodies[body_index];
+    uint32_t s;
+    pg_fix margin = PG_SPECULATIVE_DISTANCE;
+    pg_fix sweep_x = 0, sweep_y = 0;
+    if (b->type != PG_BODY_STATIC && (world->def.effects & PG_EFFECT_CONTINUOUS) != 0) {
+        /* A fast body's box grows by the distance it may travel in this step, so the
+         * speculative contacts can stop it at a surface instead of letting it tunnel. */
+        pg_fix dx = (pg_fix)(pg_fix_abs(b->v.x) / (int32_t)world->def.step_hz);
+        pg_fix dy = (pg_fix)(pg_fix_abs(b->v.y) / (int32_t)world->def.step_hz);
+        sweep_x = dx;
+        sweep_y = dy;
+    }
+    for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
+        pg_aabb box;
+        pg_geom_transform(&world->shapes[s].local, b->origin, b->rot, &world->world_geoms[s]);
+        box = pg_geom_aabb(&world->world_geoms[s]);
+        box.lo.x -= margin;
+        box.lo.y -= margin;
+        box.hi.x += margin;
+        box.hi.y += margin;
+        if (b->v.x < 0) box.lo.x -= sweep_x; else box.hi.x += sweep_x;
+        if (b->v.y < 0) box.lo.y -= sweep_y; else box.hi.y += sweep_y;
+        world->boxes[s] = box;
+    }
+    b->flags &= ~(uint32_t)PG_BODY_FLAG_GEOMETRY_DIRTY;
+}
+
+void pg__wake_body(pg_world *world, uint32_t body_index)
+{
+    pg_body *b = &world->bodies[body_index];
+    uint32_t island = b->island, i;
+    if (b->type == PG_BODY_STATIC) return;
+    if ((b->flags & PG_BODY_FLAG_AWAKE) != 0) {
+        b->sleep_time = 0;
+        return;
+    }
+    if (island == PG_NULL_INDEX) {
+        b->flags |= PG_BODY_FLAG_AWAKE;
+        b->sleep_time = 0;
+        return;
+    }
+    for (i = 0; i < world->body_high; ++i) {
+        pg_body *o = &world->bodies[i];
+        if ((o->flags & PG_BODY_FLAG_USED) != 0 && (o->flags & PG_BODY_FLAG_AWAKE) == 0 && o->island == island) {
+            o->flags |= PG_BODY_FLAG_AWAKE;
+            o->sleep_time = 0;
+            o->island = PG_NULL_INDEX;
+        }
+    }
+}
+
+/* ---- getters ------------------------------------------------------------------------------------ */
+pg_body_type pg_body_type_of(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->type : PG_BODY_STATIC; }
+pg_vec2 pg_body_position(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->origin : pg_v2_zero(); }
+pg_vec2 pg_body_world_center(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->center : pg_v2_zero(); }
+pg_angle pg_body_angle(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->angle : 0; }
+pg_vec2 pg_body_linear_velocity(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->v : pg_v2_zero(); }
+pg_fix pg_body_angular_velocity(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->w : 0; }
+int64_t pg_body_mass(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->mass : 0; }
+int64_t pg_body_inertia(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->inertia : 0; }
+int pg_body_is_awake(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? (b->flags & PG_BODY_FLAG_AWAKE) != 0 : 0; }
+uint64_t pg_body_user_data(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->user_data : 0; }
+
+uint32_t pg_body_shapes(const pg_world *w, pg_body_id id, pg_shape_id *out, uint32_t capacity)
+{
+    const pg_body *b = pg__body(w, id);
+    uint32_t s, n = 0;
+    if (b == NULL) return 0;
+    for (s = b->first_shape; s != PG_NULL_INDEX; s = w->shapes[s].next, ++n) {
+        if (out != NULL && n < capacity) {
+            out[n].index = s;
+            out[n].generation = w->shapes[s].generation;
+        }
+    }
+    return n;
+}
+
+/* ---- setters ------------------------------------------------------------------------------------- */
+#define GET_BODY(fn)                                                                         \
+    pg_body *b = pg__body(world, id);                                                       \
+    if (world == NULL) return PG_ERR_NULL;                                                  \
+    if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, fn)
+
+pg_result pg_body_set_transform(pg_world *world, pg_body_id id, pg_vec2 position, pg_angle angle)
+{
+    GET_BODY("pg_body_set_transform: body handle is stale or invalid");
+    if (!in_position_envelope(position)) return pg__fail(world, PG_ERR_ENVELOPE, "position is outside +-1000 m");
+    b->origin = position;
+    b->angle = angle;
+    b->rot = pg_rot_from_angle(angle);
+    b->center = pg_v2_add(position, pg_rot_apply(b->rot, b->local_center));
+    b->flags |= PG_BODY_FLAG_GEOMETRY_DIRTY;
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_set_linear_velocity(pg_world *world, pg_body_id id, pg_vec2 v)
+{
+    pg_result r;
+    GET_BODY("pg_body_set_linear_velocity: body handle is stale or invalid");
+    if (b->type == PG_BODY_STATIC) return pg__fail(world, PG_ERR_BODY_TYPE, "a static body has no velocity");
+    r = check_speed(world, v);
+    if (r != PG_OK) return r;
+    b->v = v;
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_set_angular_velocity(pg_world *world, pg_body_id id, pg_fix w)
+{
+    GET_BODY("pg_body_set_angular_velocity: body handle is stale or invalid");
+    if (b->type == PG_BODY_STATIC) return pg__fail(world, PG_ERR_BODY_TYPE, "a static body has no velocity");
+    if (w < -PG_FIX_C(1000) || w > PG_FIX_C(1000)) return pg__fail_value(world, PG_ERR_ENVELOPE, "angular velocity", w, "rad/s is outside +-1000");
+    if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return PG_OK;
+    b->w = w;
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_set_type(pg_world *world, pg_body_id id, pg_body_type type)
+{
+    GET_BODY("pg_body_set_type: body handle is stale or invalid");
+    if (type != PG_BODY_STATIC && type != PG_BODY_KINEMATIC && type != PG_BODY_DYNAMIC)
+        return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
+    if (b->type == type) return PG_OK;
+    pg__remove_body_contacts(world, id.index); /* pairs are found again next step */
+    b->type = type;
+    if (type == PG_BODY_STATIC) b->v = pg_v2_zero(), b->w = 0;
+    b->flags |= PG_BODY_FLAG_AWAKE | PG_BODY_FLAG_GEOMETRY_DIRTY;
+    b->island = PG_NULL_INDEX;
+    b->sleep_time = 0;
+    pg__body_update_mass(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_set_awake(pg_world *world, pg_body_id id, int awake)
+{
+    GET_BODY("pg_body_set_awake: body handle is stale or invalid");
+    if (b->type == PG_BODY_STATIC) return PG_OK;
+    if (awake) {
+        pg__wake_body(world, id.index);
+    } else if ((world->def.effects & PG_EFFECT_SLEEPING) != 0 && b->type == PG_BODY_DYNAMIC) {
+        b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
+        b->v = pg_v2_zero();
+        b->w = 0;
+        b->island = id.index;
+    }
+    return PG_OK;
+}
+
+pg_result pg_body_set_gravity_scale(pg_world *world, pg_body_id id, pg_fix scale)
+{
+    GET_BODY("pg_body_set_gravity_scale: body handle is stale or invalid");
+    if (scale < -PG_FIX_C(100) || scale > PG_FIX_C(100)) return pg__fail_value(world, PG_ERR_ENVELOPE, "gravity_scale", scale, "is outside -100..100");
+    b->gravity_scale = scale;
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_set_damping(pg_world *world, pg_body_id id, pg_fix linear, pg_fix angular)
+{
+    GET_BODY("pg_body_set_damping: body handle is stale or invalid");
+    if (linear < 0 || linear > PG_FIX_C(1000) || angular < 0 || angular > PG_FIX_C(1000))
+        return pg__fail(world, PG_ERR_ENVELOPE, "damping must be 0..1000 per second");
+    b->linear_damping = linear;
+    b->angular_damping = angular;
+    return PG_OK;
+}
+
+pg_result pg_body_set_fixed_rotation(pg_world *world, pg_body_id id, int fixed)
+{
+    GET_BODY("pg_body_set_fixed_rotation: body handle is stale or invalid");
+    if (fixed) b->flags |= PG_BODY_FLAG_FIXED_ROTATION, b->w = 0;
+    else b->flags &= ~(uint32_t)PG_BODY_FLAG_FIXED_ROTATION;
+    pg__body_update_mass(world, id.index);
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_set_user_data(pg_world *world, pg_body_id id, uint64_t user_data)
+{
+    GET_BODY("pg_body_set_user_data: body handle is stale or invalid");
+    b->user_data = user_data;
+    return PG_OK;
+}
+
+static pg_result set_material(pg_world *world, pg_body_id id, int which, pg_fix value, const char *fn)
+{
+    uint32_t s;
+    GET_BODY(fn);
+    if (which == 0 && (value < 0 || value > PG_ENV_MAX_FRICTION)) return pg__fail_value(world, PG_ERR_ENVELOPE, "friction", value, "is outside 0..10");
+    if (which == 1 && (value < 0 || value > PG_FIX_ONE)) return pg__fail_value(world, PG_ERR_ENVELOPE, "restitution", value, "is outside 0..1");
+    if (which == 2 && b->type == PG_BODY_DYNAMIC && (value < PG_ENV_MIN_DENSITY || value > PG_ENV_MAX_DENSITY))
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "density", value, "is outside 0.1..100 kg/m^2");
+    if (which == 2 && (value < 0 || value > PG_ENV_MAX_DENSITY)) return pg__fail_value(world, PG_ERR_ENVELOPE, "density", value, "is outside 0..100 kg/m^2");
+    for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
+        if (which == 0) world->shapes[s].friction = value;
+        else if (which == 1) world->shapes[s].restitution = value;
+        else world->shapes[s].density = value;
+    }
+    if (which == 2) pg__body_update_mass(world, id.index);
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_set_friction(pg_world *w, pg_body_id id, pg_fix f) { return set_material(w, id, 0, f, "pg_body_set_friction: body handle is stale or invalid"); }
+pg_result pg_body_set_restitution(pg_world *w, pg_body_id id, pg_fix r) { return set_material(w, id, 1, r, "pg_body_set_restitution: body handle is stale or invalid"); }
+pg_result pg_body_set_density(pg_world *w, pg_body_id id, pg_fix d) { return set_material(w, id, 2, d, "pg_body_set_density: body handle is stale or invalid"); }
+
+pg_result pg_body_set_filter(pg_world *world, pg_body_id id, uint32_t category, uint32_t mask)
+{
+    uint32_t s;
+    GET_BODY("pg_body_set_filter: body handle is stale or invalid");
+    for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
+        world->shapes[s].category = category;
+        world->shapes[s].mask = mask;
+    }
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+/* ---- forces and impulses ------------------------------------------------------------------------- */
+static pg_result dynamic_body(pg_world *world, pg_body_id id, const char *fn, pg_body **out)
+{
+    pg_body *b = pg__body(world, id);
+    if (world == NULL) return PG_ERR_NULL;
+    if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, fn);
+    if (b->type != PG_BODY_DYNAMIC) return pg__fail(world, PG_ERR_BODY_TYPE, "forces and impulses act on dynamic bodies only");
+    *out = b;
+    return PG_OK;
+}
+
+/* Accumulators are int64 Q48.16 and are clamped far beyond any envelope value, so a
+ * user who keeps adding cannot overflow them. */
+#define FORCE_LIMIT (INT64_C(1) << 60)
+static int64_t accumulate(int64_t acc, int64_t add)
+{
+    int64_t r = acc + add; /* |acc| <= 2^60 and |add| < 2^48: no overflow */
+    return r > FORCE_LIMIT ? FORCE_LIMIT : r < -FORCE_LIMIT ? -FORCE_LIMIT : r;
+}
+
+pg_result pg_body_apply_force(pg_world *world, pg_body_id id, pg_vec2 force)
+{
+    pg_body *b = NULL;
+    pg_result r = dynamic_body(world, id, "pg_body_apply_force: body handle is stale or invalid", &b);
+    if (r != PG_OK) return r;
+    b->force_x = accumulate(b->force_x, force.x);
+    b->force_y = accumulate(b->force_y, force.y);
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_apply_force_at(pg_world *world, pg_body_id id, pg_vec2 force, pg_vec2 point)
+{
+    pg_body *b = NULL;
+    pg_result r = dynamic_body(world, id, "pg_body_apply_force_at: body handle is stale or invalid", &b);
+    int64_t rx, ry, torque;
+    if (r != PG_OK) return r;
+    if (!in_position_envelope(point)) return pg__fail(world, PG_ERR_ENVELOPE, "point is outside +-1000 m");
+    rx = (int64_t)point.x - b->center.x;
+    ry = (int64_t)point.y - b->center.y;
+    torque = pg__round_shift64(rx * force.y - ry * force.x, 16); /* |r| < 2^27, |F| < 2^31 */
+    b->force_x = accumulate(b->force_x, force.x);
+    b->force_y = accumulate(b->force_y, force.y);
+    b->torque = accumulate(b->torque, torque);
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_apply_torque(pg_world *world, pg_body_id id, pg_fix torque)
+{
+    pg_body *b = NULL;
+    pg_result r = dynamic_body(world, id, "pg_body_apply_torque: body handle is stale or invalid", &b);
+    if (r != PG_OK) return r;
+    b->torque = accumulate(b->torque, torque);
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+static pg_fix clamp_speed(pg_world *world, int64_t v)
+{
+    int64_t cap = world->def.max_linear_speed;
+    if (v > cap || v < -cap) {
+        world->stats.speed_clamps += 1u;
+        return (pg_fix)(v > cap ? cap : -cap);
+    }
+    return (pg_fix)v;
+}
+
+pg_result pg_body_apply_linear_impulse(pg_world *world, pg_body_id id, pg_vec2 impulse, pg_vec2 point)
+{
+    pg_body *b = NULL;
+    pg_result r = dynamic_body(world, id, "pg_body_apply_linear_impulse: body handle is stale or invalid", &b);
+    int64_t rx, ry, ang;
+    if (r != PG_OK) return r;
+    if (!in_position_envelope(point)) return pg__fail(world, PG_ERR_ENVELOPE, "point is outside +-1000 m");
+    b->v.x = clamp_speed(world, (int64_t)b->v.x + pg__mul64_shr(impulse.x, b->inv_mass, 38));
+    b->v.y = clamp_speed(world, (int64_t)b->v.y + pg__mul64_shr(impulse.y, b->inv_mass, 38));
+    rx = (int64_t)point.x - b->center.x;
+    ry = (int64_t)point.y - b->center.y;
+    ang = pg__round_shift64(rx * impulse.y - ry * impulse.x, 16);
+    if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0) {
+        int64_t w = (int64_t)b->w + pg__mul64_shr(ang, b->inv_inertia, 38);
+        b->w = (pg_fix)(w > PG_FIX_C(1000) ? PG_FIX_C(1000) : w < -PG_FIX_C(1000) ? -PG_FIX_C(1000) : w);
+    }
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}
+
+pg_result pg_body_apply_angular_impulse(pg_world *world, pg_body_id id, pg_fix impulse)
+{
+    pg_body *b = NULL;
+    pg_result r = dynamic_body(world, id, "pg_body_apply_angular_impulse: body handle is stale or invalid", &b);
+    int64_t w;
+    if (r != PG_OK) return r;
+    if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return PG_OK;
+    w = (int64_t)b->w + pg__mul64_shr(impulse, b->inv_inertia, 38);
+    b->w = (pg_fix)(w > PG_FIX_C(1000) ? PG_FIX_C(1000) : w < -PG_FIX_C(1000) ? -PG_FIX_C(1000) : w);
+    pg__wake_body(world, id.index);
+    return PG_OK;
+}

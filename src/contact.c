@@ -1,0 +1,169 @@
+/* contact.c — the contact list: broadphase pairs, narrowphase manifolds, warm-start
+ * matching by feature id, and begin/end events.
+ *
+ * The list is kept sorted by (shape_a, shape_b) and rebuilt every step by merging the
+ * previous list with the new sorted pair list, so its order is a pure function of the
+ * state. Contacts between two passive bodies (static or asleep) are carried over
+ * unchanged: a sleeping pile keeps its manifolds and impulses for when it wakes.
+ */
+#include "world_internal.h"
+
+void pg__push_begin_event(pg_world *world, const pg_contact *c);
+
+static int shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb)
+{
+    const pg_shape *a = &w->shapes[sa], *b = &w->shapes[sb];
+    const pg_body *ba = &w->bodies[a->body], *bb = &w->bodies[b->body];
+    if (a->body == b->body) return 0;
+    if (ba->type != PG_BODY_DYNAMIC && bb->type != PG_BODY_DYNAMIC) return 0;
+    return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
+}
+
+/* Geometric mean, the usual rule: one slippery surface makes the pair slippery. */
+static pg_fix mix_friction(pg_fix a, pg_fix b) { return pg_fix_sqrt(pg_fix_mul(a, b)); }
+/* The bouncier surface wins. */
+static pg_fix mix_restitution(pg_fix a, pg_fix b) { return a > b ? a : b; }
+
+static int key_less(uint32_t a0, uint32_t b0, uint32_t a1, uint32_t b1) { return a0 < a1 || (a0 == a1 && b0 < b1); }
+
+/* Run the narrowphase for (sa, sb) into *c, warm-starting from `old` when given. */
+static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact *old, pg_contact *c)
+{
+    pg_manifold m;
+    int32_t i, j;
+    pg_fix speculative = PG_SPECULATIVE_DISTANCE;
+    if ((w->def.effects & PG_EFFECT_CONTINUOUS) != 0) {
+        /* Continuous collision: the speculative window covers how far the pair can close
+         * in one step, so a fast body gets a contact before it reaches the surface and
+         * the solver stops it there instead of letting it tunnel. */
+        const pg_body *a = &w->bodies[w->shapes[sa].body], *b = &w->bodies[w->shapes[sb].body];
+        int64_t reach = ((int64_t)pg_fix_abs(a->v.x) + pg_fix_abs(a->v.y) + pg_fix_abs(b->v.x) + pg_fix_abs(b->v.y)) /
+                        (int64_t)w->def.step_hz;
+        if (reach > PG_SPECULATIVE_DISTANCE) speculative = pg__sat64(reach);
+    }
+    pg_collide(&w->world_geoms[sa], &w->world_geoms[sb], speculative, &m);
+    c->shape_a = sa;
+    c->shape_b = sb;
+    c->body_a = w->shapes[sa].body;
+    c->body_b = w->shapes[sb].body;
+    c->normal = m.normal;
+    c->point_count = m.count;
+    c->friction = mix_friction(w->shapes[sa].friction, w->shapes[sb].friction);
+    c->restitution = mix_restitution(w->shapes[sa].restitution, w->shapes[sb].restitution);
+    for (i = 0; i < 2; ++i) {
+        pg_contact_point *p = &c->points[i];
+        p->point = i < m.count ? m.points[i].point : pg_v2_zero();
+        p->separation = i < m.count ? m.points[i].separation : 0;
+        p->id = i < m.count ? m.points[i].id : 0;
+        p->normal_impulse = 0;
+        p->tangent_impulse = 0;
+        p->max_normal_impulse = 0;
+        if (old == NULL || i >= m.count) continue;
+        for (j = 0; j < old->point_count; ++j) {
+            if (old->points[j].id == p->id) {
+                p->normal_impulse = old->points[j].normal_impulse;
+                p->tangent_impulse = old->points[j].tangent_impulse;
+                break;
+            }
+        }
+    }
+}
+
+static int body_was_active(const pg_world *w, uint32_t shape) { return (w->proxy_flags[shape] & PG_PROXY_ACTIVE) != 0; }
+
+pg_result pg__update_contacts(pg_world *w)
+{
+    uint32_t n_proxies = 0, n_pairs = 0, s, i = 0, j = 0, out = 0;
+    pg_contact *old = w->contacts, *next = w->contacts_next;
+    int overflow;
+
+    /* Proxies: the used shape slots in index order, so proxy order == shape order. */
+    for (s = 0; s < w->shape_high; ++s) {
+        const pg_shape *sh = &w->shapes[s];
+        w->proxy_flags[s] = 0;
+        if (!sh->used) continue;
+        if (pg__body_is_active(&w->bodies[sh->body])) w->proxy_flags[s] = PG_PROXY_ACTIVE;
+        w->proxy_boxes[n_proxies] = w->boxes[s];
+        w->proxy_flags_compact[n_proxies] = w->proxy_flags[s];
+        w->proxy_shape[n_proxies] = s;
+        ++n_proxies;
+    }
+    overflow = pg_broadphase_pairs(w->proxy_boxes, w->proxy_flags_compact, n_proxies, w->pairs, w->pair_capacity, &n_pairs,
+                                   w->broadphase_scratch, w->broadphase_scratch_bytes);
+    if (overflow != 0) w->stats.capacity_misses += 1u;
+    w->stats.pair_count = n_pairs;
+
+    /* Merge the old contact list with the new pairs, both sorted by shape pair. */
+    for (;;) {
+        uint32_t pa = 0, pb = 0;
+        int have_pair = 0, have_old = i < w->contact_count;
+        while (j < n_pairs) { /* next pair that can collide */
+            pa = w->proxy_shape[w->pairs[j].a];
+            pb = w->proxy_shape[w->pairs[j].b];
+            if (shapes_should_collide(w, pa, pb)) { have_pair = 1; break; }
+            ++j;
+        }
+        if (!have_pair && !have_old) break;
+        if (have_old && (!have_pair || key_less(old[i].shape_a, old[i].shape_b, pa, pb))) {
+            /* not found this step: keep it if both sides were passive, else it ended */
+            const pg_contact *c = &old[i];
+            int kept = 0;
+            if (w->shapes[c->shape_a].used && w->shapes[c->shape_b].used && !body_was_active(w, c->shape_a) &&
+                !body_was_active(w, c->shape_b) && shapes_should_collide(w, c->shape_a, c->shape_b)) {
+                if (out < w->def.max_contacts) {
+                    next[out++] = *c;
+                    kept = 1;
+                } else {
+                    w->stats.capacity_misses += 1u;
+                }
+            }
+            if (!kept) pg__push_end_event(w, c);
+            ++i;
+            continue;
+        }
+        {
+            const pg_contact *prev = NULL;
+            pg_contact *c;
+            if (have_old && old[i].shape_a == pa && old[i].shape_b == pb) prev = &old[i++];
+            ++j;
+            if (out >= w->def.max_contacts) {
+                w->stats.capacity_misses += 1u;
+                if (prev != NULL) pg__push_end_event(w, prev);
+                continue;
+            }
+            c = &next[out];
+            collide_pair(w, pa, pb, prev, c);
+            if (c->point_count == 0) { /* boxes overlap, shapes do not touch: no contact */
+                if (prev != NULL) pg__push_end_event(w, prev);
+                continue;
+            }
+            ++out;
+            if (prev == NULL) pg__push_begin_event(w, c);
+            {   /* a moving body touching a sleeping one wakes its island */
+                pg_body *ba = &w->bodies[c->body_a], *bb = &w->bodies[c->body_b];
+                if (pg__body_is_active(ba) && bb->type != PG_BODY_STATIC && !pg__body_is_active(bb)) pg__wake_body(w, c->body_b);
+                if (pg__body_is_active(bb) && ba->type != PG_BODY_STATIC && !pg__body_is_active(ba)) pg__wake_body(w, c->body_a);
+            }
+        }
+    }
+    w->contacts = next;
+    w->contacts_next = old;
+    w->contact_count = out;
+    return PG_OK;
+}
+
+void pg__remove_body_contacts(pg_world *w, uint32_t body_index)
+{
+    uint32_t i, out = 0;
+    for (i = 0; i < w->contact_count; ++i) {
+        pg_contact *c = &w->contacts[i];
+        if (c->body_a == body_index || c->body_b == body_index) {
+            pg_body *other = &w->bodies[c->body_a == body_index ? c->body_b : c->body_a];
+            pg__push_end_event(w, c);
+            if (other->type != PG_BODY_STATIC) pg__wake_body(w, c->body_a == body_index ? c->body_b : c->body_a);
+            continue;
+        }
+        w->contacts[out++] = *c;
+    }
+    w->contact_count = out;
+}

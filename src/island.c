@@ -1,0 +1,70 @@
+/* island.c — sleeping. Bodies at rest accumulate a sleep timer; bodies that touch form
+ * islands (union-find over touching contacts between moving bodies, the lower index
+ * always the root, so the result is a pure function of the state); an island whose
+ * every body has rested for time_to_sleep falls asleep at once. A sleeping body keeps
+ * the lowest body index of its island, so waking one wakes the whole island. */
+#include "world_internal.h"
+
+static uint32_t find_root(uint32_t *parent, uint32_t i)
+{
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+static void unite(uint32_t *parent, uint32_t a, uint32_t b)
+{
+    uint32_t ra = find_root(parent, a), rb = find_root(parent, b);
+    if (ra < rb) parent[rb] = ra;
+    else if (rb < ra) parent[ra] = rb;
+}
+
+void pg__update_sleep(pg_world *w)
+{
+    uint32_t *parent = w->island_parent, i;
+    pg_fix dt = (pg_fix)((65536 + (int32_t)w->def.step_hz / 2) / (int32_t)w->def.step_hz);
+    int64_t lin_tol2 = (int64_t)w->def.sleep_linear_tolerance * w->def.sleep_linear_tolerance;
+    pg_fix ang_tol = w->def.sleep_angular_tolerance;
+    pg_fix *min_time = (pg_fix *)(void *)w->solver_scratch; /* solver scratch is free after the solve */
+
+    for (i = 0; i < w->body_high; ++i) {
+        pg_body *b = &w->bodies[i];
+        parent[i] = i;
+        if (!pg__body_is_active(b)) continue;
+        if ((b->flags & PG_BODY_FLAG_ALLOW_SLEEP) == 0 ||
+            (int64_t)b->v.x * b->v.x + (int64_t)b->v.y * b->v.y > lin_tol2 || b->w > ang_tol || b->w < -ang_tol) {
+            b->sleep_time = 0;
+        } else if (b->sleep_time < PG_FIX_C(1000)) {
+            b->sleep_time += dt;
+        }
+    }
+    for (i = 0; i < w->contact_count; ++i) {
+        const pg_contact *c = &w->contacts[i];
+        const pg_body *a = &w->bodies[c->body_a], *b = &w->bodies[c->body_b];
+        if (c->point_count == 0) continue;
+        if (a->type == PG_BODY_DYNAMIC && b->type == PG_BODY_DYNAMIC && pg__body_is_active(a) && pg__body_is_active(b))
+            unite(parent, c->body_a, c->body_b);
+    }
+    for (i = 0; i < w->body_high; ++i) min_time[i] = PG_FIX_MAX;
+    for (i = 0; i < w->body_high; ++i) {
+        const pg_body *b = &w->bodies[i];
+        uint32_t r;
+        if (!pg__body_is_active(b)) continue;
+        r = find_root(parent, i);
+        if (b->sleep_time < min_time[r]) min_time[r] = b->sleep_time;
+    }
+    for (i = 0; i < w->body_high; ++i) {
+        pg_body *b = &w->bodies[i];
+        uint32_t r;
+        if (!pg__body_is_active(b)) continue;
+        r = find_root(parent, i);
+        if (min_time[r] >= w->def.time_to_sleep) {
+            b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
+            b->v = pg_v2_zero();
+            b->w = 0;
+            b->island = r;
+        }
+    }
+}

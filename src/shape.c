@@ -1,0 +1,385 @@
+/* shape.c — geometry validation, shapes on bodies, and the six ready-made kinds. */
+#include "world_internal.h"
+
+#define MAX_OFFSET PG_FIX_C(50)       /* a shape's vertices within 50 m of its body */
+#define MIN_EDGE PG_LINEAR_SLOP       /* shorter edges are degenerate */
+
+static int offset_ok(pg_vec2 p) { return p.x >= -MAX_OFFSET && p.x <= MAX_OFFSET && p.y >= -MAX_OFFSET && p.y <= MAX_OFFSET; }
+static int size_ok(pg_fix s) { return s >= PG_ENV_MIN_SIZE && s <= PG_ENV_MAX_SIZE; }
+
+static void clear_geometry(pg_geometry *g)
+{
+    int i;
+    g->kind = PG_SHAPE_CIRCLE;
+    g->count = 0;
+    g->radius = 0;
+    for (i = 0; i < PG_MAX_VERTICES; ++i) g->vertices[i] = pg_v2_zero();
+}
+
+pg_result pg_geometry_circle(pg_vec2 center, pg_fix radius, pg_geometry *out)
+{
+    if (out == NULL) return PG_ERR_NULL;
+    clear_geometry(out);
+    if (!size_ok(radius)) return radius <= 0 ? PG_ERR_DEGENERATE : PG_ERR_ENVELOPE;
+    if (!offset_ok(center)) return PG_ERR_ENVELOPE;
+    out->kind = PG_SHAPE_CIRCLE;
+    out->count = 1;
+    out->vertices[0] = center;
+    out->radius = radius;
+    return PG_OK;
+}
+
+static pg_result two_points(pg_vec2 a, pg_vec2 b, pg_fix min_length)
+{
+    int64_t dx = (int64_t)b.x - a.x, dy = (int64_t)b.y - a.y;
+    if (!offset_ok(a) || !offset_ok(b)) return PG_ERR_ENVELOPE;
+    if (dx * dx + dy * dy < (int64_t)min_length * min_length) return PG_ERR_DEGENERATE;
+    return PG_OK;
+}
+
+pg_result pg_geometry_segment(pg_vec2 a, pg_vec2 b, pg_geometry *out)
+{
+    pg_result r;
+    if (out == NULL) return PG_ERR_NULL;
+    clear_geometry(out);
+    r = two_points(a, b, 2 * PG_ENV_MIN_SIZE);
+    if (r != PG_OK) return r;
+    out->kind = PG_SHAPE_SEGMENT;
+    out->count = 2;
+    out->vertices[0] = a;
+    out->vertices[1] = b;
+    return PG_OK;
+}
+
+pg_result pg_geometry_capsule(pg_vec2 a, pg_vec2 b, pg_fix radius, pg_geometry *out)
+{
+    pg_result r;
+    if (out == NULL) return PG_ERR_NULL;
+    clear_geometry(out);
+    if (!size_ok(radius)) return radius <= 0 ? PG_ERR_DEGENERATE : PG_ERR_ENVELOPE;
+    r = two_points(a, b, MIN_EDGE);
+    if (r != PG_OK) return r;
+    out->kind = PG_SHAPE_CAPSULE;
+    out->count = 2;
+    out->vertices[0] = a;
+    out->vertices[1] = b;
+    out->radius = radius;
+    return PG_OK;
+}
+
+pg_result pg_geometry_polygon(const pg_vec2 *vertices, int32_t count, pg_geometry *out)
+{
+    int32_t i;
+    int64_t area2 = 0;
+    if (out == NULL || vertices == NULL) return PG_ERR_NULL;
+    clear_geometry(out);
+    if (count < 3 || count > PG_MAX_VERTICES) return PG_ERR_INVALID_ARGUMENT;
+    for (i = 0; i < count; ++i)
+        if (!offset_ok(vertices[i])) return PG_ERR_ENVELOPE;
+    for (i = 0; i < count; ++i) { /* twice the signed area, relative to vertex 0 (|v| <= 2^22) */
+        pg_vec2 a = vertices[i], b = vertices[(i + 1) % count];
+        area2 += ((int64_t)a.x - vertices[0].x) * ((int64_t)b.y - vertices[0].y) -
+                 ((int64_t)a.y - vertices[0].y) * ((int64_t)b.x - vertices[0].x);
+    }
+    if (area2 == 0) return PG_ERR_DEGENERATE;
+    for (i = 0; i < count; ++i) out->vertices[i] = area2 > 0 ? vertices[i] : vertices[count - 1 - i];
+    for (i = 0; i < count; ++i) {
+        pg_vec2 a = out->vertices[i], b = out->vertices[(i + 1) % count], c = out->vertices[(i + 2) % count];
+        int64_t ex = (int64_t)b.x - a.x, ey = (int64_t)b.y - a.y, fx = (int64_t)c.x - b.x, fy = (int64_t)c.y - b.y;
+        int64_t cross = ex * fy - ey * fx;
+        if (ex * ex + ey * ey < (int64_t)MIN_EDGE * MIN_EDGE) return PG_ERR_DEGENERATE;
+        if (cross == 0) return PG_ERR_DEGENERATE;
+        if (cross < 0) return PG_ERR_NOT_CONVEX;
+    }
+    /* A winding that turns twice (a pentagram) passes the local test above; every
+     * vertex must also lie left of the fan lines from vertex 0. */
+    for (i = 1; i + 1 < count; ++i) {
+        pg_vec2 a = out->vertices[0], b = out->vertices[i], c = out->vertices[i + 1];
+        int64_t cross = ((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) - ((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
+        if (cross <= 0) return PG_ERR_NOT_CONVEX;
+    }
+    out->kind = PG_SHAPE_POLYGON;
+    out->count = count;
+    return PG_OK;
+}
+
+pg_result pg_geometry_box(pg_fix hw, pg_fix hh, pg_vec2 center, pg_angle angle, pg_geometry *out)
+{
+    pg_vec2 v[4];
+    pg_rot r = pg_rot_from_angle(angle);
+    int i;
+    if (out == NULL) return PG_ERR_NULL;
+    clear_geometry(out);
+    if (hw <= 0 || hh <= 0) return PG_ERR_DEGENERATE;
+    if (!size_ok(hw) || !size_ok(hh)) return PG_ERR_ENVELOPE;
+    if (!offset_ok(center)) return PG_ERR_ENVELOPE;
+    v[0] = pg_v2(-hw, -hh);
+    v[1] = pg_v2(hw, -hh);
+    v[2] = pg_v2(hw, hh);
+    v[3] = pg_v2(-hw, hh);
+    for (i = 0; i < 4; ++i) v[i] = pg_v2_add(center, angle == 0 ? v[i] : pg_rot_apply(r, v[i]));
+    return pg_geometry_polygon(v, 4, out);
+}
+
+pg_result pg_geometry_triangle(pg_vec2 center, pg_fix circumradius, pg_angle angle, pg_geometry *out)
+{
+    pg_vec2 v[3];
+    int i;
+    if (out == NULL) return PG_ERR_NULL;
+    clear_geometry(out);
+    if (circumradius <= 0) return PG_ERR_DEGENERATE;
+    if (!size_ok(circumradius)) return PG_ERR_ENVELOPE;
+    for (i = 0; i < 3; ++i) {
+        pg_rot r = pg_rot_from_angle(angle + (pg_angle)((uint32_t)i * 1431655765u)); /* i/3 turn */
+        v[i] = pg_v2_add(center, pg_v2(pg__mul_q30(circumradius, r.c), pg__mul_q30(circumradius, r.s)));
+    }
+    return pg_geometry_polygon(v, 3, out);
+}
+
+/* ---- shapes ---------------------------------------------------------------------------------- */
+pg_shape_def pg_default_shape_def(void)
+{
+    pg_shape_def d;
+    d.density = PG_FIX_ONE;
+    d.friction = (pg_fix)39322; /* 0.6 */
+    d.restitution = 0;
+    d.category = 1u;
+    d.mask = 0xFFFFFFFFu;
+    return d;
+}
+
+static void build_local(const pg_geometry *g, pg_geom *out)
+{
+    int32_t i, n = g->count;
+    int64_t cx = 0, cy = 0;
+    for (i = 0; i < PG_MAX_POLYGON_VERTICES; ++i) {
+        out->vertices[i] = i < n ? g->vertices[i] : pg_v2_zero();
+        out->normals[i].x = 0;
+        out->normals[i].y = 0;
+    }
+    out->count = n;
+    out->radius = g->radius;
+    if (n >= 2) {
+        for (i = 0; i < n; ++i) {
+            pg_vec2 a = g->vertices[i], b = g->vertices[(i + 1) % n];
+            out->normals[i] = pg_dir_normalize((int64_t)b.y - a.y, -((int64_t)b.x - a.x));
+        }
+        if (n == 2) {
+            out->normals[1].x = -out->normals[0].x;
+            out->normals[1].y = -out->normals[0].y;
+        }
+    }
+    for (i = 0; i < n; ++i) cx += g->vertices[i].x, cy += g->vertices[i].y;
+    /* the vertex average: a point inside, used by narrowphase for orientation only */
+    out->centroid = pg_v2((pg_fix)(cx / n), (pg_fix)(cy / n));
+}
+
+static pg_result check_shape_def(const pg_world *world, const pg_body *b, const pg_shape_def *d)
+{
+    if (b->type == PG_BODY_DYNAMIC && (d->density < PG_ENV_MIN_DENSITY || d->density > PG_ENV_MAX_DENSITY))
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "density", d->density, "kg/m^2 is outside 0.1..100 for a dynamic body");
+    if (d->density < 0 || d->density > PG_ENV_MAX_DENSITY)
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "density", d->density, "kg/m^2 is outside 0..100");
+    if (d->friction < 0 || d->friction > PG_ENV_MAX_FRICTION)
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "friction", d->friction, "is outside 0..10");
+    if (d->restitution < 0 || d->restitution > PG_FIX_ONE)
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "restitution", d->restitution, "is outside 0..1");
+    return PG_OK;
+}
+
+static pg_result check_geometry(const pg_world *world, const pg_geometry *g)
+{
+    pg_geometry copy;
+    pg_result r;
+    switch (g->kind) {
+    case PG_SHAPE_CIRCLE:
+        r = g->count == 1 ? pg_geometry_circle(g->vertices[0], g->radius, &copy) : PG_ERR_INVALID_ARGUMENT;
+        break;
+    case PG_SHAPE_SEGMENT:
+        r = g->count == 2 && g->radius == 0 ? pg_geometry_segment(g->vertices[0], g->vertices[1], &copy) : PG_ERR_INVALID_ARGUMENT;
+        break;
+    case PG_SHAPE_CAPSULE:
+        r = g->count == 2 ? pg_geometry_capsule(g->vertices[0], g->vertices[1], g->radius, &copy) : PG_ERR_INVALID_ARGUMENT;
+        break;
+    case PG_SHAPE_POLYGON:
+        r = g->radius == 0 ? pg_geometry_polygon(g->vertices, g->count, &copy) : PG_ERR_INVALID_ARGUMENT;
+        if (r == PG_OK && copy.vertices[0].x != g->vertices[0].x) r = PG_ERR_NOT_CONVEX; /* must already be CCW */
+        break;
+    default:
+        r = PG_ERR_INVALID_ARGUMENT;
+        break;
+    }
+    if (r != PG_OK) return pg__fail(world, r, "geometry is invalid: build it with the pg_geometry_* functions and check their result");
+    return PG_OK;
+}
+
+pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *def, const pg_geometry *geometry, pg_shape_id *out)
+{
+    pg_body *b = pg__body(world, body);
+    pg_shape *s;
+    uint32_t i, *link;
+    pg_result r;
+    if (out != NULL) out->index = 0, out->generation = 0;
+    if (world == NULL || def == NULL || geometry == NULL || out == NULL) return PG_ERR_NULL;
+    if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_shape_create: body handle is stale or invalid");
+    r = check_shape_def(world, b, def);
+    if (r != PG_OK) return r;
+    r = check_geometry(world, geometry);
+    if (r != PG_OK) return r;
+    if (b->shape_count >= 64) return pg__fail(world, PG_ERR_CAPACITY, "a body has at most 64 shapes");
+    for (i = 0; i < world->def.max_shapes; ++i)
+        if (!world->shapes[i].used) break;
+    if (i == world->def.max_shapes) return pg__fail(world, PG_ERR_CAPACITY, "max_shapes reached");
+    s = &world->shapes[i];
+    {
+        uint32_t generation = s->generation + 1u;
+        s->generation = generation == 0 ? 1u : generation;
+    }
+    s->used = 1;
+    s->body = body.index;
+    s->next = PG_NULL_INDEX;
+    s->geometry = *geometry;
+    build_local(geometry, &s->local);
+    s->density = def->density;
+    s->friction = def->friction;
+    s->restitution = def->restitution;
+    s->category = def->category;
+    s->mask = def->mask;
+    /* append: shapes stay in creation order */
+    for (link = &b->first_shape; *link != PG_NULL_INDEX; link = &world->shapes[*link].next) {}
+    *link = i;
+    b->shape_count += 1u;
+    b->flags |= PG_BODY_FLAG_GEOMETRY_DIRTY;
+    if (i >= world->shape_high) world->shape_high = i + 1u;
+    world->shape_count += 1u;
+    pg__body_update_mass(world, body.index);
+    pg__body_sync_geometry(world, body.index);
+    pg__wake_body(world, body.index);
+    out->index = i;
+    out->generation = s->generation;
+    return PG_OK;
+}
+
+pg_result pg_shape_destroy(pg_world *world, pg_shape_id id)
+{
+    pg_shape *s = pg__shape(world, id);
+    pg_body *b;
+    uint32_t *link;
+    if (world == NULL) return PG_ERR_NULL;
+    if (s == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_shape_destroy: shape handle is stale or invalid");
+    b = &world->bodies[s->body];
+    pg__remove_body_contacts(world, s->body); /* simplest correct: the body's pairs are found again */
+    for (link = &b->first_shape; *link != id.index; link = &world->shapes[*link].next) {}
+    *link = s->next;
+    s->used = 0;
+    b->shape_count -= 1u;
+    world->shape_count -= 1u;
+    pg__body_update_mass(world, s->body);
+    b->flags |= PG_BODY_FLAG_GEOMETRY_DIRTY;
+    pg__wake_body(world, s->body);
+    return PG_OK;
+}
+
+pg_body_id pg_shape_body(const pg_world *world, pg_shape_id id)
+{
+    const pg_shape *s = pg__shape(world, id);
+    pg_body_id b = {0, 0};
+    if (s != NULL) {
+        b.index = s->body;
+        b.generation = world->bodies[s->body].generation;
+    }
+    return b;
+}
+
+pg_result pg_shape_geometry(const pg_world *world, pg_shape_id id, pg_geometry *out)
+{
+    const pg_shape *s = pg__shape(world, id);
+    if (world == NULL || out == NULL) return PG_ERR_NULL;
+    if (s == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_shape_geometry: shape handle is stale or invalid");
+    *out = s->geometry;
+    return PG_OK;
+}
+
+/* ---- the six kinds ------------------------------------------------------------------------------ */
+static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, const pg_geometry *g, int n, pg_body_id *out)
+{
+    pg_body_id id;
+    pg_shape_id sid;
+    pg_result r;
+    int i;
+    if (w == NULL || bd == NULL || sd == NULL || out == NULL) return PG_ERR_NULL;
+    out->index = 0;
+    out->generation = 0;
+    if (w->body_count >= w->def.max_bodies) return pg__fail(w, PG_ERR_CAPACITY, "max_bodies reached");
+    if (w->shape_count + (uint32_t)n > w->def.max_shapes) return pg__fail(w, PG_ERR_CAPACITY, "max_shapes reached");
+    r = pg_body_create(w, bd, &id);
+    if (r != PG_OK) return r;
+    for (i = 0; i < n; ++i) {
+        r = pg_shape_create(w, id, sd, &g[i], &sid);
+        if (r != PG_OK) {
+            (void)pg_body_destroy(w, id); /* all or nothing */
+            return r;
+        }
+    }
+    *out = id;
+    return PG_OK;
+}
+
+static pg_result geometry_failed(pg_world *w, pg_result r, const char *what)
+{
+    return pg__fail(w, r, what);
+}
+
+pg_result pg_make_ball(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix radius, pg_body_id *out)
+{
+    pg_geometry g;
+    pg_result r = pg_geometry_circle(pg_v2_zero(), radius, &g);
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "ball radius must be 0.025..50 m");
+    return make_body(w, bd, sd, &g, 1, out);
+}
+
+pg_result pg_make_capsule(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix length, pg_fix radius, pg_body_id *out)
+{
+    pg_geometry g;
+    pg_result r = length < 0 ? PG_ERR_DEGENERATE : pg_geometry_capsule(pg_v2(-length / 2, 0), pg_v2(length - length / 2, 0), radius, &g);
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "capsule length must be 0.005..100 m and radius 0.025..50 m");
+    return make_body(w, bd, sd, &g, 1, out);
+}
+
+pg_result pg_make_box(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix width, pg_fix height, pg_body_id *out)
+{
+    pg_geometry g;
+    pg_result r = pg_geometry_box(width / 2, height / 2, pg_v2_zero(), 0, &g);
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "box sides must be 0.05..100 m");
+    return make_body(w, bd, sd, &g, 1, out);
+}
+
+pg_result pg_make_triangle(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix circumradius, pg_body_id *out)
+{
+    pg_geometry g;
+    pg_result r = pg_geometry_triangle(pg_v2_zero(), circumradius, PG_ANGLE_QUARTER, &g);
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "triangle circumradius must be 0.025..50 m");
+    return make_body(w, bd, sd, &g, 1, out);
+}
+
+pg_result pg_make_star(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix circumradius, pg_body_id *out)
+{
+    pg_geometry g[2];
+    pg_result r = pg_geometry_triangle(pg_v2_zero(), circumradius, PG_ANGLE_QUARTER, &g[0]);
+    if (r == PG_OK) r = pg_geometry_triangle(pg_v2_zero(), circumradius, PG_ANGLE_QUARTER + PG_ANGLE_HALF, &g[1]);
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "star circumradius must be 0.025..50 m");
+    return make_body(w, bd, sd, g, 2, out);
+}
+
+pg_result pg_make_wall(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix width, pg_fix height, pg_body_id *out)
+{
+    pg_body_def def;
+    pg_geometry g;
+    pg_result r;
+    if (bd == NULL) return PG_ERR_NULL;
+    def = *bd;
+    def.type = PG_BODY_STATIC;
+    r = pg_geometry_box(width / 2, height / 2, pg_v2_zero(), 0, &g);
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "wall sides must be 0.05..100 m");
+    return make_body(w, &def, sd, &g, 1, out);
+}

@@ -1,0 +1,444 @@
+/* solver.c — soft-step contact solver with substeps and relaxation.
+ *
+ * The scheme is Box2D v3's "soft step": per substep integrate velocities, warm start,
+ * solve contacts with a soft bias (stiffness in hertz, a damping ratio, push-out capped),
+ * integrate positions, then relax without bias; restitution once after the substeps.
+ * Contacts are soft springs tuned in hertz, so there is no slop to choose between
+ * lasting overlap and bouncy correction; they use the current separation each substep.
+ *
+ * FIXED-POINT FORMULATION (the part that is ours)
+ * Masses span 2.5e-4 .. 2.5e5 kg and inertias 1e-7 .. 1e8 kg m^2, so impulses (kg m/s)
+ * do not fit Q16.16. But the solver never needs an impulse itself, only what it does to
+ * velocities. For a contact row with effective inverse mass
+ *     K = 1/mA + 1/mB + (rA x n)^2/IA + (rB x n)^2/IB,
+ * an impulse P changes the velocities by P/mA, P (rA x n)/IA, ... We store instead
+ *     lambda = P K            (units m/s: the change of relative normal velocity)
+ * and precompute, once per step, the dimensionless or 1/m coefficients
+ *     kA = (1/mA)/K  in [0, 1]   (Q2.30, times the normal)    gA = (rA x n)/IA / K (Q8.24, 1/m)
+ * so the substep loop works with int32 values of bounded range and int64 products only.
+ * Accumulated "impulses" (lambda) are Q16.16 m/s; the Coulomb bound |Pt| <= f Pn becomes
+ * |lambda_t| <= f (Kt/Kn) lambda_n with the ratio precomputed. Warm starting applies the
+ * stored lambda with the new step's coefficients.
+ *
+ * SYMMETRY: the two points of a manifold are solved in alternating order (even substeps
+ * 0 then 1, odd ones 1 then 0) and all rounding is symmetric in sign, so a symmetric
+ * column gets no sideways push from the solver's order.
+ */
+#include "wide.h"
+#include "world_internal.h"
+
+typedef struct solver_body {
+    pg_vec2 v;
+    pg_fix w;
+    pg_vec2 c0, c;        /* centre at the start of the step, and now */
+    pg_angle a0, a;
+    pg_rot dq;            /* rotation from a0 to a */
+    pg_vec2 dv;           /* velocity change per substep from gravity and force */
+    pg_fix dw;            /* angular velocity change per substep from torque */
+    int32_t lin_damp, ang_damp; /* Q2.30 factor per substep; PG_ROT_ONE: none */
+} solver_body;
+
+typedef struct constraint_point {
+    pg_vec2 rA, rB;
+    pg_fix adjusted_separation;
+    pg_fix cnA, cnB, ctA, ctB;       /* r x n, r x t: Q16.16 m */
+    int32_t lnA_x, lnA_y, lnB_x, lnB_y; /* kA n, kB n: Q2.30 */
+    int32_t ltA_x, ltA_y, ltB_x, ltB_y;
+    int32_t gnA, gnB, gtA, gtB;      /* Q8.24 1/m */
+    pg_fix friction_ratio;           /* f Kt / Kn */
+    pg_fix relative_velocity;        /* normal, at the start of the step */
+    pg_fix normal_impulse, tangent_impulse, max_normal_impulse;
+} constraint_point;
+
+typedef struct constraint {
+    uint32_t a, b;           /* solver body slots; the static dummy for a static side */
+    uint32_t contact;
+    pg_dir n;
+    int32_t count;
+    int32_t soft_static;     /* one side cannot move: stiffer softness */
+    pg_fix restitution;
+    constraint_point p[2];
+} constraint;
+
+typedef struct softness { pg_fix bias_rate; int32_t mass_scale, impulse_scale; /* Q2.30 */ } softness;
+
+size_t pg__solver_scratch_bytes(const pg_world_def *def)
+{
+    return sizeof(solver_body) * ((size_t)def->max_bodies + 1u) + sizeof(constraint) * def->max_contacts +
+           sizeof(uint32_t) * def->max_bodies + 64u;
+}
+
+/* Box2D v3's b2MakeSoft in fixed point: omega = 2 pi hz, a1 = 2 zeta + h omega,
+ * a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3,
+ * impulse scale a3. h = 1 / n_per_second. */
+static softness make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
+{
+    softness s;
+    int64_t omega = pg__round_shift64((int64_t)hertz * PG_FIX_TWO_PI, 16); /* Q16 */
+    int64_t h_omega = (omega * 2 + (int64_t)n_per_second) / (2 * (int64_t)n_per_second);
+    int64_t a1 = 2 * (int64_t)zeta + h_omega;
+    int64_t a2 = pg__round_shift64(h_omega * a1, 16);
+    s.bias_rate = a1 > 0 ? (pg_fix)((omega * 65536 + a1 / 2) / a1) : 0;
+    s.mass_scale = (int32_t)((a2 * (INT64_C(1) << 30) + (65536 + a2) / 2) / (65536 + a2));
+    s.impulse_scale = (int32_t)(((INT64_C(1) << 46) + (65536 + a2) / 2) / (65536 + a2));
+    return s;
+}
+
+static int bit_length(uint64_t v)
+{
+    int n = 0;
+    while (v != 0) { ++n; v >>= 1; }
+    return n;
+}
+
+/* round(num / den * 2^q) for |num / den| bounded so the result fits int32; den > 0 has
+ * been normalised below 2^31 by the shift `s` applied to num as well. */
+static int32_t ratio_q(int64_t num, int s, int64_t den31, int q)
+{
+    int64_t n = s > 0 ? pg__round_shift64(num, s) : num;
+    uint64_t un = pg__mag64(n), r;
+    if (den31 <= 0) return 0;
+    if (un >= (UINT64_C(1) << (62 - q))) return n < 0 ? -INT32_MAX : INT32_MAX; /* beyond any envelope value */
+    r = ((un << q) + (uint64_t)den31 / 2u) / (uint64_t)den31;
+    if (r > (uint64_t)INT32_MAX) r = (uint64_t)INT32_MAX;
+    return n < 0 ? -(int32_t)r : (int32_t)r;
+}
+
+/* (r x d) for a Q16 vector and a Q30 direction, rounded to Q16. */
+static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return (pg_fix)pg__round_shift64((int64_t)r.x * d.y - (int64_t)r.y * d.x, 30); }
+/* d . v for a Q30 direction and a Q16 vector, rounded to Q16. */
+static pg_fix dot_dv(pg_dir d, pg_vec2 v) { return (pg_fix)pg__round_shift64((int64_t)d.x * v.x + (int64_t)d.y * v.y, 30); }
+
+/* Coefficients of one row (normal or tangent) for one point. */
+static void row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation,
+                             int64_t *K_out, int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
+{
+    int64_t K = A->inv_mass + B->inv_mass, tA = 0, tB = 0;
+    int32_t kA, kB;
+    int s;
+    if (rotation) {
+        tA = pg__mul64_shr(A->inv_inertia, cA, 16); /* invI (r x d): Q38 per metre */
+        tB = pg__mul64_shr(B->inv_inertia, cB, 16);
+        K += pg__mul64_shr(tA, cA, 16) + pg__mul64_shr(tB, cB, 16);
+    }
+    *K_out = K;
+    s = bit_length((uint64_t)K) - 31;
+    if (s < 0) s = 0;
+    {
+        int64_t K31 = s > 0 ? pg__round_shift64(K, s) : K;
+        kA = ratio_q(A->inv_mass, s, K31, 30);
+        kB = ratio_q(B->inv_mass, s, K31, 30);
+        *lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
+        *lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
+        *lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
+        *lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
+        *gA = rotation ? ratio_q(tA, s, K31, 24) : 0;
+        *gB = rotation ? ratio_q(tB, s, K31, 24) : 0;
+    }
+}
+
+typedef struct step_context {
+    uint32_t n;              /* substeps per second */
+    int64_t h_q32;           /* substep in Q32 seconds */
+    int64_t angle_per_w;     /* binary-angle units per (rad/s) per substep, Q8 */
+    softness soft, soft_static;
+    pg_fix push_max;
+    uint32_t effects;
+} step_context;
+
+static void apply_row(solver_body *A, solver_body *B, pg_fix lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y, int32_t gA, int32_t gB)
+{
+    A->v.x -= (pg_fix)pg__round_shift64((int64_t)lambda * lA_x, 30);
+    A->v.y -= (pg_fix)pg__round_shift64((int64_t)lambda * lA_y, 30);
+    A->w -= (pg_fix)pg__round_shift64((int64_t)lambda * gA, 24);
+    B->v.x += (pg_fix)pg__round_shift64((int64_t)lambda * lB_x, 30);
+    B->v.y += (pg_fix)pg__round_shift64((int64_t)lambda * lB_y, 30);
+    B->w += (pg_fix)pg__round_shift64((int64_t)lambda * gB, 24);
+}
+
+/* Relative velocity of B's anchor against A's along direction d (cA, cB: r x d). */
+static pg_fix relative_speed(const solver_body *A, const solver_body *B, pg_dir d, pg_fix cA, pg_fix cB)
+{
+    pg_vec2 dv = pg_v2((pg_fix)((int64_t)B->v.x - A->v.x), (pg_fix)((int64_t)B->v.y - A->v.y));
+    return dot_dv(d, dv) + (pg_fix)pg__round_shift64((int64_t)B->w * cB - (int64_t)A->w * cA, 16);
+}
+
+static pg_fix clamp_fix(int64_t v) { return pg__sat64(v); }
+
+static void solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
+{
+    solver_body *A = &bodies[c->a], *B = &bodies[c->b];
+    const softness *soft = c->soft_static ? &ctx->soft_static : &ctx->soft;
+    pg_dir t;
+    int32_t k;
+    t.x = c->n.y;
+    t.y = -c->n.x;
+    /* friction first: keeping bodies apart matters more than keeping them from sliding */
+    if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
+        for (k = 0; k < c->count; ++k) {
+            constraint_point *p = &c->p[order ? c->count - 1 - k : k];
+            pg_fix vt = relative_speed(A, B, t, p->ctA, p->ctB);
+            pg_fix max_f = pg_fix_mul(p->friction_ratio, p->normal_impulse);
+            pg_fix acc = clamp_fix((int64_t)p->tangent_impulse - vt);
+            pg_fix lambda;
+            acc = acc < -max_f ? -max_f : acc > max_f ? max_f : acc;
+            lambda = acc - p->tangent_impulse;
+            p->tangent_impulse = acc;
+            apply_row(A, B, lambda, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+        }
+    }
+    for (k = 0; k < c->count; ++k) {
+        constraint_point *p = &c->p[order ? c->count - 1 - k : k];
+        /* current separation from how far the anchors moved this step */
+        pg_vec2 dA = pg_v2_add(pg_v2_sub(A->c, A->c0), pg_rot_apply(A->dq, p->rA));
+        pg_vec2 dB = pg_v2_add(pg_v2_sub(B->c, B->c0), pg_rot_apply(B->dq, p->rB));
+        pg_fix s = dot_dv(c->n, pg_v2_sub(dB, dA)) + p->adjusted_separation;
+        int64_t bias = 0, mass_scale = PG_ROT_ONE, impulse_scale = 0, lambda, acc;
+        pg_fix vn;
+        if (s > 0) {
+            bias = (int64_t)s * ctx->n; /* speculative: close the gap in one substep, no more */
+        } else if (use_bias) {
+            bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
+            if (bias < -ctx->push_max) bias = -ctx->push_max;
+            mass_scale = soft->mass_scale;
+            impulse_scale = soft->impulse_scale;
+        }
+        vn = relative_speed(A, B, c->n, p->cnA, p->cnB);
+        lambda = -pg__round_shift64(mass_scale * ((int64_t)vn + bias), 30) - pg__round_shift64(impulse_scale * p->normal_impulse, 30);
+        acc = (int64_t)p->normal_impulse + lambda;
+        if (acc < 0) acc = 0;
+        if (acc > PG_FIX_MAX) acc = PG_FIX_MAX;
+        lambda = acc - p->normal_impulse;
+        p->normal_impulse = (pg_fix)acc;
+        if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
+        apply_row(A, B, (pg_fix)lambda, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+    }
+}
+
+static void warm_start(constraint *c, solver_body *bodies)
+{
+    solver_body *A = &bodies[c->a], *B = &bodies[c->b];
+    int32_t k;
+    for (k = 0; k < c->count; ++k) {
+        constraint_point *p = &c->p[k];
+        apply_row(A, B, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+        apply_row(A, B, p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+    }
+}
+
+static void restitution(const step_context *ctx, constraint *c, solver_body *bodies, pg_fix threshold)
+{
+    solver_body *A = &bodies[c->a], *B = &bodies[c->b];
+    int32_t k;
+    (void)ctx;
+    if (c->restitution == 0) return;
+    for (k = 0; k < c->count; ++k) {
+        constraint_point *p = &c->p[k];
+        pg_fix vn;
+        int64_t lambda, acc;
+        if (p->relative_velocity > -threshold || p->max_normal_impulse == 0) continue;
+        vn = relative_speed(A, B, c->n, p->cnA, p->cnB);
+        lambda = -((int64_t)vn + pg_fix_mul(c->restitution, p->relative_velocity));
+        acc = (int64_t)p->normal_impulse + lambda;
+        if (acc < 0) acc = 0;
+        if (acc > PG_FIX_MAX) acc = PG_FIX_MAX;
+        lambda = acc - p->normal_impulse;
+        p->normal_impulse = (pg_fix)acc;
+        apply_row(A, B, (pg_fix)lambda, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+    }
+}
+
+static pg_fix clamp_speed(pg_world *w, pg_fix v)
+{
+    pg_fix cap = w->def.max_linear_speed;
+    if (v > cap || v < -cap) {
+        w->stats.speed_clamps += 1u;
+        return v > cap ? cap : -cap;
+    }
+    return v;
+}
+
+void pg__solve(pg_world *w)
+{
+    unsigned char *scratch = (unsigned char *)w->solver_scratch;
+    solver_body *bodies = (solver_body *)(void *)scratch;
+    uint32_t dummy = w->def.max_bodies; /* the static side of a contact */
+    constraint *cons = (constraint *)(void *)(scratch + sizeof(solver_body) * ((size_t)w->def.max_bodies + 1u));
+    uint32_t *active = (uint32_t *)(void *)((unsigned char *)cons + sizeof(constraint) * w->def.max_contacts);
+    uint32_t n_active = 0, n_cons = 0, i, sub;
+    step_context ctx;
+    const uint32_t effects = w->def.effects;
+    const int rotation = (effects & PG_EFFECT_ROTATION) != 0;
+    pg_fix hertz;
+
+    ctx.n = w->def.step_hz * w->def.substeps;
+    ctx.h_q32 = (int64_t)(((UINT64_C(1) << 32) + ctx.n / 2u) / ctx.n);
+    ctx.angle_per_w = (INT64_C(174997830547) + (int64_t)ctx.n / 2) / (int64_t)ctx.n; /* 2^40 / (2 pi) / n */
+    hertz = w->def.contact_hertz;
+    if ((int64_t)hertz * 4 > (int64_t)ctx.n * 65536) hertz = (pg_fix)((int64_t)ctx.n * 65536 / 4);
+    ctx.soft = make_soft(hertz, w->def.contact_damping_ratio, ctx.n);
+    ctx.soft_static = make_soft(pg_fix_add(hertz, hertz), w->def.contact_damping_ratio, ctx.n);
+    ctx.push_max = w->def.contact_push_max;
+    ctx.effects = effects;
+
+    /* the dummy static body */
+    {
+        solver_body *d = &bodies[dummy];
+        d->v = pg_v2_zero();
+        d->w = 0;
+        d->c0 = d->c = pg_v2_zero();
+        d->a0 = d->a = 0;
+        d->dq = pg_rot_identity();
+    }
+
+    /* bodies */
+    for (i = 0; i < w->body_high; ++i) {
+        pg_body *b = &w->bodies[i];
+        solver_body *sb;
+        if (!pg__body_is_active(b)) continue;
+        active[n_active++] = i;
+        sb = &bodies[i];
+        sb->v = b->v;
+        sb->w = rotation ? b->w : 0;
+        sb->c0 = sb->c = b->center;
+        sb->a0 = sb->a = b->angle;
+        sb->dq = pg_rot_identity();
+        sb->dv = pg_v2_zero();
+        sb->dw = 0;
+        sb->lin_damp = PG_ROT_ONE;
+        sb->ang_damp = PG_ROT_ONE;
+        if (b->type != PG_BODY_DYNAMIC) continue;
+        {
+            int64_t ax = 0, ay = 0, alpha = 0;
+            if ((effects & PG_EFFECT_GRAVITY) != 0 && b->gravity_scale != 0) {
+                ax = pg_fix_mul(w->def.gravity.x, b->gravity_scale);
+                ay = pg_fix_mul(w->def.gravity.y, b->gravity_scale);
+            }
+            if (b->force_x != 0 || b->force_y != 0) {
+                ax += pg__mul64_shr(b->force_x, b->inv_mass, 38);
+                ay += pg__mul64_shr(b->force_y, b->inv_mass, 38);
+            }
+            if (rotation && b->torque != 0) alpha = pg__mul64_shr(b->torque, b->inv_inertia, 38);
+            sb->dv.x = pg__sat64(pg__round_shift64(pg__sat64(ax) * ctx.h_q32, 32));
+            sb->dv.y = pg__sat64(pg__round_shift64(pg__sat64(ay) * ctx.h_q32, 32));
+            sb->dw = pg__sat64(pg__round_shift64(pg__sat64(alpha) * ctx.h_q32, 32));
+        }
+        if ((effects & PG_EFFECT_DAMPING) != 0) {
+            /* v *= 1 / (1 + h c) per substep */
+            int64_t N = (int64_t)ctx.n * 65536;
+            if (b->linear_damping > 0) sb->lin_damp = (int32_t)(((INT64_C(1) << 30) * N + (N + b->linear_damping) / 2) / (N + b->linear_damping));
+            if (b->angular_damping > 0) sb->ang_damp = (int32_t)(((INT64_C(1) << 30) * N + (N + b->angular_damping) / 2) / (N + b->angular_damping));
+        }
+    }
+
+    /* constraints, in contact order */
+    for (i = 0; i < w->contact_count; ++i) {
+        pg_contact *ct = &w->contacts[i];
+        pg_body *A = &w->bodies[ct->body_a], *B = &w->bodies[ct->body_b];
+        int activeA = pg__body_is_active(A), activeB = pg__body_is_active(B);
+        constraint *c;
+        int32_t k;
+        pg_dir t;
+        if (ct->point_count == 0 || (!activeA && !activeB)) continue;
+        c = &cons[n_cons++];
+        c->a = activeA ? ct->body_a : dummy;
+        c->b = activeB ? ct->body_b : dummy;
+        c->contact = i;
+        c->n = ct->normal;
+        c->count = ct->point_count;
+        c->soft_static = A->inv_mass == 0 || B->inv_mass == 0;
+        c->restitution = (effects & PG_EFFECT_RESTITUTION) != 0 ? ct->restitution : 0;
+        t.x = c->n.y;
+        t.y = -c->n.x;
+        for (k = 0; k < c->count; ++k) {
+            constraint_point *p = &c->p[k];
+            const pg_contact_point *cp = &ct->points[k];
+            int64_t Kn, Kt;
+            p->rA = pg_v2_sub(cp->point, A->center);
+            p->rB = pg_v2_sub(cp->point, B->center);
+            p->adjusted_separation = cp->separation - dot_dv(c->n, pg_v2_sub(p->rB, p->rA));
+            p->cnA = cross_rd(p->rA, c->n);
+            p->cnB = cross_rd(p->rB, c->n);
+            p->ctA = cross_rd(p->rA, t);
+            p->ctB = cross_rd(p->rB, t);
+            row_coefficients(A, B, p->cnA, p->cnB, c->n, rotation, &Kn, &p->lnA_x, &p->lnA_y, &p->lnB_x, &p->lnB_y, &p->gnA, &p->gnB);
+            row_coefficients(A, B, p->ctA, p->ctB, t, rotation, &Kt, &p->ltA_x, &p->ltA_y, &p->ltB_x, &p->ltB_y, &p->gtA, &p->gtB);
+            if ((effects & PG_EFFECT_FRICTION) != 0) {
+                int s = bit_length((uint64_t)Kn) - 31;
+                int64_t Kn31;
+                if (s < 0) s = 0;
+                Kn31 = s > 0 ? pg__round_shift64(Kn, s) : Kn;
+                p->friction_ratio = pg_fix_mul(ct->friction, ratio_q(Kt, s, Kn31, 16));
+            } else {
+                p->friction_ratio = 0;
+            }
+            p->normal_impulse = cp->normal_impulse;
+            p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? cp->tangent_impulse : 0;
+            p->max_normal_impulse = 0;
+            {
+                solver_body *sa = &bodies[c->a], *sbb = &bodies[c->b];
+                p->relative_velocity = relative_speed(sa, sbb, c->n, p->cnA, p->cnB);
+            }
+        }
+    }
+
+    for (sub = 0; sub < w->def.substeps; ++sub) {
+        int order = (int)(sub & 1u);
+        /* integrate velocities */
+        for (i = 0; i < n_active; ++i) {
+            solver_body *sb = &bodies[active[i]];
+            sb->v.x = clamp_speed(w, pg_fix_add(sb->v.x, sb->dv.x));
+            sb->v.y = clamp_speed(w, pg_fix_add(sb->v.y, sb->dv.y));
+            if (sb->lin_damp != PG_ROT_ONE) {
+                sb->v.x = pg__mul_q30(sb->v.x, sb->lin_damp);
+                sb->v.y = pg__mul_q30(sb->v.y, sb->lin_damp);
+            }
+            if (rotation) {
+                sb->w = pg_fix_add(sb->w, sb->dw);
+                if (sb->ang_damp != PG_ROT_ONE) sb->w = pg__mul_q30(sb->w, sb->ang_damp);
+            }
+        }
+        for (i = 0; i < n_cons; ++i) warm_start(&cons[i], bodies);
+        for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, &cons[i], bodies, 1, order);
+        /* integrate positions */
+        for (i = 0; i < n_active; ++i) {
+            solver_body *sb = &bodies[active[i]];
+            sb->c.x = pg__sat64((int64_t)sb->c.x + pg__round_shift64((int64_t)sb->v.x * ctx.h_q32, 32));
+            sb->c.y = pg__sat64((int64_t)sb->c.y + pg__round_shift64((int64_t)sb->v.y * ctx.h_q32, 32));
+            if (rotation && sb->w != 0) {
+                sb->a += (pg_angle)(uint64_t)pg__round_shift64((int64_t)sb->w * ctx.angle_per_w, 24);
+                sb->dq = pg_rot_from_angle(sb->a - sb->a0);
+            }
+        }
+        for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, &cons[i], bodies, 0, order);
+    }
+    if ((effects & PG_EFFECT_RESTITUTION) != 0)
+        for (i = 0; i < n_cons; ++i) restitution(&ctx, &cons[i], bodies, w->def.restitution_threshold);
+
+    /* store impulses for warm starting next step */
+    for (i = 0; i < n_cons; ++i) {
+        const constraint *c = &cons[i];
+        pg_contact *ct = &w->contacts[c->contact];
+        int32_t k;
+        for (k = 0; k < c->count; ++k) {
+            ct->points[k].normal_impulse = c->p[k].normal_impulse;
+            ct->points[k].tangent_impulse = c->p[k].tangent_impulse;
+            ct->points[k].max_normal_impulse = c->p[k].max_normal_impulse;
+        }
+    }
+
+    /* write back */
+    for (i = 0; i < n_active; ++i) {
+        pg_body *b = &w->bodies[active[i]];
+        const solver_body *sb = &bodies[active[i]];
+        b->v = sb->v;
+        b->w = sb->w;
+        b->center = sb->c;
+        if (b->angle != sb->a) {
+            b->angle = sb->a;
+            b->rot = pg_rot_from_angle(sb->a);
+        }
+        b->origin = pg_v2_sub(b->center, pg_rot_apply(b->rot, b->local_center));
+        b->force_x = b->force_y = b->torque = 0;
+    }
+}

@@ -1,0 +1,322 @@
+/* world.c — world creation inside caller memory, the step's order, results and events. */
+#include "world_internal.h"
+
+/* ---- results -------------------------------------------------------------------- */
+static const char *const result_names[PG_RESULT_COUNT] = {
+    "PG_OK", "PG_ERR_NULL", "PG_ERR_INVALID_ARGUMENT", "PG_ERR_STALE_HANDLE", "PG_ERR_CAPACITY",
+    "PG_ERR_MEMORY", "PG_ERR_ENVELOPE", "PG_ERR_DEGENERATE", "PG_ERR_NOT_CONVEX", "PG_ERR_BODY_TYPE",
+    "PG_ERR_NOT_FOUND"};
+static const char *const result_messages[PG_RESULT_COUNT] = {
+    "success",
+    "a required pointer argument is NULL: pass a valid object or output pointer",
+    "an argument has a value the function does not accept: see the function's documentation",
+    "the handle names a body or shape that was destroyed: drop the handle",
+    "a pool is full: create the world with larger max_bodies / max_shapes / max_contacts",
+    "the memory block is too small: allocate pg_world_memory_size(&def) bytes, aligned to 8",
+    "a value is outside pogon's envelope (README, Envelope): scale the scene into range",
+    "degenerate geometry (no area or length, or repeated/collinear points): fix the vertices",
+    "polygon vertices do not form a convex polygon: pass the convex hull",
+    "the operation does not apply to this body type (e.g. a force on a static body)",
+    "nothing was found"};
+
+const char *pg_result_name(pg_result r)
+{
+    return (unsigned)r < PG_RESULT_COUNT ? result_names[r] : "PG_ERR_UNKNOWN";
+}
+
+const char *pg_result_message(pg_result r)
+{
+    return (unsigned)r < PG_RESULT_COUNT ? result_messages[r] : "unknown result code";
+}
+
+static void copy_text(char *dst, size_t cap, size_t *pos, const char *src)
+{
+    while (*src != '\0' && *pos + 1 < cap) dst[(*pos)++] = *src++;
+    dst[*pos] = '\0';
+}
+
+pg_result pg__fail(const pg_world *world, pg_result r, const char *detail)
+{
+    if (world != NULL) {
+        /* last_error is diagnostic scratch, not simulation state: writing it through a
+         * const world is the one exception to "failing calls change nothing". */
+        pg_world *w = (pg_world *)(uintptr_t)world;
+        size_t pos = 0;
+        copy_text(w->last_error, sizeof w->last_error, &pos, result_names[r]);
+        copy_text(w->last_error, sizeof w->last_error, &pos, ": ");
+        copy_text(w->last_error, sizeof w->last_error, &pos, detail);
+    }
+    return r;
+}
+
+pg_result pg__fail_value(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *bound)
+{
+    char buf[96], num[PG_FIX_FORMAT_MAX];
+    size_t pos = 0;
+    pg_fix_format(value, num, sizeof num);
+    buf[0] = '\0';
+    copy_text(buf, sizeof buf, &pos, what);
+    copy_text(buf, sizeof buf, &pos, " ");
+    copy_text(buf, sizeof buf, &pos, num);
+    copy_text(buf, sizeof buf, &pos, " ");
+    copy_text(buf, sizeof buf, &pos, bound);
+    return pg__fail(world, r, buf);
+}
+
+const char *pg_world_last_error(const pg_world *world) { return world != NULL ? world->last_error : ""; }
+
+/* ---- definition and memory ------------------------------------------------------------ */
+pg_world_def pg_default_world_def(void)
+{
+    pg_world_def d;
+    d.gravity = pg_v2(0, PG_FIX_C(-10));
+    d.step_hz = 60;
+    d.substeps = 4;
+    d.effects = PG_EFFECTS_ALL;
+    d.contact_hertz = PG_FIX_C(30);
+    d.contact_damping_ratio = PG_FIX_C(10);
+    d.contact_push_max = PG_FIX_C(3);
+    d.restitution_threshold = PG_FIX_C(1);
+    d.max_linear_speed = PG_FIX_C(400);
+    d.sleep_linear_tolerance = (pg_fix)3277;  /* 0.05 m/s */
+    d.sleep_angular_tolerance = (pg_fix)2287; /* 2 degrees/s */
+    d.time_to_sleep = PG_FIX_HALF;
+    d.max_bodies = 1024;
+    d.max_shapes = 2048;
+    d.max_contacts = 4096;
+    return d;
+}
+
+#define PG_MAX_CAPACITY (1u << 24)
+
+static const char *check_def(const pg_world_def *d)
+{
+    if (d->step_hz < 1 || d->step_hz > 1000) return "step_hz must be 1..1000";
+    if (d->substeps < 1 || d->substeps > 16) return "substeps must be 1..16";
+    if ((d->effects & ~PG_EFFECTS_ALL) != 0) return "effects has bits that are not PG_EFFECT_*";
+    if (d->max_bodies < 1 || d->max_bodies > PG_MAX_CAPACITY) return "max_bodies must be 1..2^24";
+    if (d->max_shapes < 1 || d->max_shapes > PG_MAX_CAPACITY) return "max_shapes must be 1..2^24";
+    if (d->max_contacts < 1 || d->max_contacts > PG_MAX_CAPACITY) return "max_contacts must be 1..2^24";
+    if (d->contact_hertz <= 0 || d->contact_hertz > PG_FIX_C(1000)) return "contact_hertz must be in (0, 1000]";
+    if (d->contact_damping_ratio < 0 || d->contact_damping_ratio > PG_FIX_C(1000)) return "contact_damping_ratio must be 0..1000";
+    if (d->contact_push_max <= 0 || d->contact_push_max > PG_FIX_C(1000)) return "contact_push_max must be in (0, 1000] m/s";
+    if (d->restitution_threshold < 0) return "restitution_threshold must be >= 0";
+    if (d->max_linear_speed <= 0 || d->max_linear_speed > PG_FIX_C(4096)) return "max_linear_speed must be in (0, 4096] m/s";
+    if (d->sleep_linear_tolerance < 0 || d->sleep_angular_tolerance < 0 || d->time_to_sleep < 0) return "sleep settings must be >= 0";
+    if (d->gravity.x < -PG_FIX_C(1000) || d->gravity.x > PG_FIX_C(1000) || d->gravity.y < -PG_FIX_C(1000) || d->gravity.y > PG_FIX_C(1000))
+        return "gravity components must be within +-1000 m/s^2";
+    return NULL;
+}
+
+typedef struct layout {
+    size_t world, bodies, shapes, contacts, contacts_next, geoms, boxes, flags, pboxes, pflags, pshape, pairs, bp, solver, island, begin, end, total;
+} layout;
+
+static size_t align8(size_t n) { return (n + 7u) & ~(size_t)7u; }
+
+static layout compute_layout(const pg_world_def *d)
+{
+    layout l;
+    size_t at = 0;
+    uint32_t pair_capacity = d->max_contacts;
+#define PLACE(field, bytes) do { l.field = at; at += align8(bytes); } while (0)
+    PLACE(world, sizeof(pg_world));
+    PLACE(bodies, sizeof(pg_body) * d->max_bodies);
+    PLACE(shapes, sizeof(pg_shape) * d->max_shapes);
+    PLACE(contacts, sizeof(pg_contact) * d->max_contacts);
+    PLACE(contacts_next, sizeof(pg_contact) * d->max_contacts);
+    PLACE(geoms, sizeof(pg_geom) * d->max_shapes);
+    PLACE(boxes, sizeof(pg_aabb) * d->max_shapes);
+    PLACE(flags, d->max_shapes);
+    PLACE(pboxes, sizeof(pg_aabb) * d->max_shapes);
+    PLACE(pflags, d->max_shapes);
+    PLACE(pshape, sizeof(uint32_t) * d->max_shapes);
+    PLACE(pairs, sizeof(pg_pair) * pair_capacity);
+    PLACE(bp, pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity));
+    PLACE(solver, pg__solver_scratch_bytes(d));
+    PLACE(island, sizeof(uint32_t) * d->max_bodies);
+    PLACE(begin, sizeof(pg_contact_event) * d->max_contacts);
+    PLACE(end, sizeof(pg_contact_event) * d->max_contacts);
+#undef PLACE
+    l.total = at;
+    return l;
+}
+
+size_t pg_world_memory_size(const pg_world_def *def)
+{
+    if (def == NULL || check_def(def) != NULL) return 0;
+    return compute_layout(def).total;
+}
+
+pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_size, pg_world **out)
+{
+    const char *problem;
+    layout l;
+    unsigned char *m = (unsigned char *)memory;
+    pg_world *w;
+    size_t i;
+    if (out != NULL) *out = NULL;
+    if (def == NULL || memory == NULL || out == NULL) return PG_ERR_NULL;
+    problem = check_def(def);
+    if (problem != NULL) return PG_ERR_INVALID_ARGUMENT;
+    if (((uintptr_t)memory & 7u) != 0) return PG_ERR_MEMORY;
+    l = compute_layout(def);
+    if (memory_size < l.total) return PG_ERR_MEMORY;
+    for (i = 0; i < l.total; ++i) m[i] = 0; /* no uninitialised byte can leak into a hash */
+    w = (pg_world *)(void *)(m + l.world);
+    w->def = *def;
+    w->bodies = (pg_body *)(void *)(m + l.bodies);
+    w->shapes = (pg_shape *)(void *)(m + l.shapes);
+    w->contacts = (pg_contact *)(void *)(m + l.contacts);
+    w->contacts_next = (pg_contact *)(void *)(m + l.contacts_next);
+    w->world_geoms = (pg_geom *)(void *)(m + l.geoms);
+    w->boxes = (pg_aabb *)(void *)(m + l.boxes);
+    w->proxy_flags = m + l.flags;
+    w->proxy_boxes = (pg_aabb *)(void *)(m + l.pboxes);
+    w->proxy_flags_compact = m + l.pflags;
+    w->proxy_shape = (uint32_t *)(void *)(m + l.pshape);
+    w->pairs = (pg_pair *)(void *)(m + l.pairs);
+    w->pair_capacity = def->max_contacts;
+    w->broadphase_scratch = m + l.bp;
+    w->broadphase_scratch_bytes = l.solver - l.bp;
+    w->solver_scratch = m + l.solver;
+    w->solver_scratch_bytes = l.island - l.solver;
+    w->island_parent = (uint32_t *)(void *)(m + l.island);
+    w->begin_events = (pg_contact_event *)(void *)(m + l.begin);
+    w->end_events = (pg_contact_event *)(void *)(m + l.end);
+    *out = w;
+    return PG_OK;
+}
+
+/* ---- handles ------------------------------------------------------------------------------ */
+pg_body *pg__body(const pg_world *world, pg_body_id id)
+{
+    pg_body *b;
+    if (world == NULL || id.index >= world->def.max_bodies || id.generation == 0) return NULL;
+    b = &world->bodies[id.index];
+    return ((b->flags & PG_BODY_FLAG_USED) != 0 && b->generation == id.generation) ? b : NULL;
+}
+
+pg_shape *pg__shape(const pg_world *world, pg_shape_id id)
+{
+    pg_shape *s;
+    if (world == NULL || id.index >= world->def.max_shapes || id.generation == 0) return NULL;
+    s = &world->shapes[id.index];
+    return (s->used && s->generation == id.generation) ? s : NULL;
+}
+
+/* ---- events ---------------------------------------------------------------------------------- */
+static pg_contact_event make_event(const pg_world *world, const pg_contact *c)
+{
+    pg_contact_event e;
+    e.shape_a.index = c->shape_a;
+    e.shape_a.generation = world->shapes[c->shape_a].generation;
+    e.shape_b.index = c->shape_b;
+    e.shape_b.generation = world->shapes[c->shape_b].generation;
+    e.body_a.index = c->body_a;
+    e.body_a.generation = world->bodies[c->body_a].generation;
+    e.body_b.index = c->body_b;
+    e.body_b.generation = world->bodies[c->body_b].generation;
+    return e;
+}
+
+void pg__push_end_event(pg_world *world, const pg_contact *c)
+{
+    if (world->end_count < world->def.max_contacts) world->end_events[world->end_count++] = make_event(world, c);
+}
+
+void pg__push_begin_event(pg_world *world, const pg_contact *c);
+void pg__push_begin_event(pg_world *world, const pg_contact *c)
+{
+    if (world->begin_count < world->def.max_contacts) world->begin_events[world->begin_count++] = make_event(world, c);
+}
+
+const pg_contact_event *pg_world_begin_events(const pg_world *world, uint32_t *count)
+{
+    if (count != NULL) *count = world != NULL ? world->begin_count : 0;
+    return world != NULL ? world->begin_events : NULL;
+}
+
+const pg_contact_event *pg_world_end_events(const pg_world *world, uint32_t *count)
+{
+    if (count != NULL) *count = world != NULL ? world->end_count : 0;
+    return world != NULL ? world->end_events : NULL;
+}
+
+/* ---- settings --------------------------------------------------------------------------------- */
+pg_result pg_world_set_gravity(pg_world *world, pg_vec2 gravity)
+{
+    pg_world_def d;
+    if (world == NULL) return PG_ERR_NULL;
+    d = world->def;
+    d.gravity = gravity;
+    if (check_def(&d) != NULL) return pg__fail(world, PG_ERR_ENVELOPE, "gravity components must be within +-1000 m/s^2");
+    world->def.gravity = gravity;
+    return PG_OK;
+}
+
+pg_vec2 pg_world_gravity(const pg_world *world) { return world != NULL ? world->def.gravity : pg_v2_zero(); }
+
+pg_result pg_world_set_effects(pg_world *world, uint32_t effects)
+{
+    uint32_t i;
+    if (world == NULL) return PG_ERR_NULL;
+    if ((effects & ~PG_EFFECTS_ALL) != 0) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "effects has bits that are not PG_EFFECT_*");
+    if ((world->def.effects & PG_EFFECT_SLEEPING) != 0 && (effects & PG_EFFECT_SLEEPING) == 0) {
+        for (i = 0; i < world->body_high; ++i) /* without sleeping, nothing may stay asleep */
+            if ((world->bodies[i].flags & PG_BODY_FLAG_USED) != 0 && world->bodies[i].type != PG_BODY_STATIC)
+                world->bodies[i].flags |= PG_BODY_FLAG_AWAKE, world->bodies[i].sleep_time = 0;
+    }
+    world->def.effects = effects;
+    return PG_OK;
+}
+
+uint32_t pg_world_effects(const pg_world *world) { return world != NULL ? world->def.effects : 0; }
+uint64_t pg_world_frame(const pg_world *world) { return world != NULL ? world->frame : 0; }
+pg_world_def pg_world_get_def(const pg_world *world) { return world != NULL ? world->def : pg_default_world_def(); }
+
+pg_world_stats pg_world_get_stats(const pg_world *world)
+{
+    pg_world_stats s;
+    uint32_t i;
+    if (world == NULL) {
+        pg_world_stats zero = {0, 0, 0, 0, 0, 0, 0, 0};
+        return zero;
+    }
+    s = world->stats;
+    s.body_count = world->body_count;
+    s.shape_count = world->shape_count;
+    s.contact_count = world->contact_count;
+    s.awake_body_count = 0;
+    s.touching_contact_count = 0;
+    for (i = 0; i < world->body_high; ++i)
+        if (pg__body_is_active(&world->bodies[i])) ++s.awake_body_count;
+    for (i = 0; i < world->contact_count; ++i)
+        if (world->contacts[i].point_count > 0) ++s.touching_contact_count;
+    return s;
+}
+
+/* ---- the step ------------------------------------------------------------------------------------ */
+pg_result pg_world_step(pg_world *world)
+{
+    pg_result r;
+    uint32_t i;
+    if (world == NULL) return PG_ERR_NULL;
+    world->begin_count = 0;
+    world->end_count = 0;
+    /* 1. geometry of moving bodies (static and sleeping ones keep theirs) */
+    for (i = 0; i < world->body_high; ++i) {
+        pg_body *b = &world->bodies[i];
+        if ((b->flags & PG_BODY_FLAG_USED) == 0) continue;
+        if (pg__body_is_active(b) || (b->flags & PG_BODY_FLAG_GEOMETRY_DIRTY) != 0) pg__body_sync_geometry(world, i);
+    }
+    /* 2. broadphase + narrowphase + contact bookkeeping */
+    r = pg__update_contacts(world);
+    if (r != PG_OK) return r;
+    /* 3. forces, solver, integration */
+    pg__solve(world);
+    /* 4. islands and sleep */
+    if ((world->def.effects & PG_EFFECT_SLEEPING) != 0) pg__update_sleep(world);
+    world->frame += 1u;
+    return PG_OK;
+}

@@ -1,0 +1,147 @@
+/* world_internal.h (internal) — the world's state and the pieces of a step.
+ *
+ * State that influences the future (and therefore goes into hashes and snapshots):
+ * the body and shape pools (slots in use, generations), every body's motion state and
+ * sleep timer, the contact list (sorted by shape pair) with its manifolds and
+ * accumulated impulses, world settings and the frame counter. Everything else here is
+ * scratch recomputed each step.
+ */
+#ifndef POGON_SRC_WORLD_INTERNAL_H
+#define POGON_SRC_WORLD_INTERNAL_H
+#include "pogon/pogon.h"
+#include "broadphase.h"
+#include "geom.h"
+
+#define PG_NULL_INDEX 0xFFFFFFFFu
+
+/* Linear slop and speculative distance: contacts begin this far apart so resting bodies
+ * keep their manifold without jitter. Geometry has no skin: boxes placed edge to edge
+ * do not start overlapping. */
+#define PG_LINEAR_SLOP ((pg_fix)328)           /* 0.005 m */
+#define PG_SPECULATIVE_DISTANCE ((pg_fix)1311) /* 0.02 m: 4 slops */
+
+/* Envelope, Q16.16. */
+#define PG_ENV_MIN_SIZE ((pg_fix)1638)          /* 0.025 m: smallest radius / half extent */
+#define PG_ENV_MAX_SIZE PG_FIX_C(50)
+#define PG_ENV_MIN_DENSITY ((pg_fix)6554)       /* 0.1 */
+#define PG_ENV_MAX_DENSITY PG_FIX_C(100)
+#define PG_ENV_MAX_POSITION PG_FIX_C(1000)
+#define PG_ENV_MAX_FRICTION PG_FIX_C(10)
+
+enum {
+    PG_BODY_FLAG_USED = 1u << 0,
+    PG_BODY_FLAG_AWAKE = 1u << 1,
+    PG_BODY_FLAG_FIXED_ROTATION = 1u << 2,
+    PG_BODY_FLAG_ALLOW_SLEEP = 1u << 3,
+    PG_BODY_FLAG_GEOMETRY_DIRTY = 1u << 4 /* world geometry must be recomputed */
+};
+
+typedef struct pg_body {
+    uint32_t generation;
+    uint32_t flags;
+    pg_body_type type;
+    pg_vec2 origin;          /* derived: center - R local_center */
+    pg_vec2 center;          /* world centre of mass: the integrated position */
+    pg_vec2 local_center;
+    pg_angle angle;
+    pg_rot rot;              /* derived from angle */
+    pg_vec2 v;
+    pg_fix w;
+    int64_t force_x, force_y, torque; /* Q48.16, cleared after each step */
+    pg_fix linear_damping, angular_damping, gravity_scale;
+    int64_t mass, inertia;            /* Q32.32 kg, Q28.36 kg m^2 */
+    int64_t inv_mass, inv_inertia;    /* Q25.38 (1/kg, 1/(kg m^2)); 0 for infinite */
+    pg_fix sleep_time;
+    uint32_t island;         /* while asleep: the lowest body index of its island */
+    uint32_t first_shape;    /* shapes of the body, a list in creation order */
+    uint32_t shape_count;
+    uint64_t user_data;
+} pg_body;
+
+typedef struct pg_shape {
+    uint32_t generation;
+    uint32_t used;
+    uint32_t body;
+    uint32_t next;           /* next shape of the same body */
+    pg_geometry geometry;    /* as given, body frame */
+    pg_geom local;           /* collision form, body frame */
+    pg_fix density, friction, restitution;
+    uint32_t category, mask;
+} pg_shape;
+
+typedef struct pg_contact_point {
+    pg_vec2 point;           /* world, at the last narrowphase */
+    pg_fix separation;
+    uint32_t id;
+    pg_fix normal_impulse;   /* accumulated, velocity-space (see solver.c) */
+    pg_fix tangent_impulse;
+    pg_fix max_normal_impulse;
+} pg_contact_point;
+
+typedef struct pg_contact {
+    uint32_t shape_a, shape_b; /* shape_a < shape_b: the sort key */
+    uint32_t body_a, body_b;
+    pg_dir normal;
+    int32_t point_count;       /* 0: boxes overlap but shapes do not touch */
+    pg_contact_point points[2];
+    pg_fix friction, restitution;
+} pg_contact;
+
+struct pg_world {
+    pg_world_def def;
+    uint64_t frame;
+    pg_body *bodies;
+    pg_shape *shapes;
+    pg_contact *contacts, *contacts_next; /* double buffer, swapped each step */
+    uint32_t contact_count;
+    uint32_t body_high;        /* one past the highest body slot ever used */
+    uint32_t shape_high;
+    uint32_t body_count, shape_count;
+    pg_world_stats stats;
+
+    /* scratch, recomputed each step */
+    pg_geom *world_geoms;      /* per shape slot, world frame */
+    pg_aabb *boxes;            /* per shape slot, fattened */
+    uint8_t *proxy_flags;      /* per shape slot: PG_PROXY_ACTIVE when its body moves */
+    pg_aabb *proxy_boxes;      /* compacted: used shapes in slot order */
+    uint8_t *proxy_flags_compact;
+    uint32_t *proxy_shape;     /* proxy -> shape slot */
+    pg_pair *pairs;
+    uint32_t pair_capacity;
+    void *broadphase_scratch;
+    size_t broadphase_scratch_bytes;
+    void *solver_scratch;
+    size_t solver_scratch_bytes;
+    uint32_t *island_parent;   /* per body slot */
+
+    pg_contact_event *begin_events, *end_events;
+    uint32_t begin_count, end_count;
+
+    char last_error[160];
+};
+
+/* world.c */
+pg_result pg__fail(const pg_world *world, pg_result r, const char *detail);
+pg_result pg__fail_value(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *bound);
+pg_body *pg__body(const pg_world *world, pg_body_id id); /* NULL if stale */
+pg_shape *pg__shape(const pg_world *world, pg_shape_id id);
+void pg__push_end_event(pg_world *world, const pg_contact *c);
+
+/* body.c */
+void pg__body_update_mass(pg_world *world, uint32_t body_index);
+void pg__body_sync_geometry(pg_world *world, uint32_t body_index); /* world geoms + boxes */
+void pg__wake_body(pg_world *world, uint32_t body_index);         /* and its island */
+int pg__body_is_active(const pg_body *b); /* awake and movable: takes part in the solver */
+
+/* contact.c */
+pg_result pg__update_contacts(pg_world *world);
+void pg__remove_body_contacts(pg_world *world, uint32_t body_index);
+
+/* solver.c */
+size_t pg__solver_scratch_bytes(const pg_world_def *def);
+void pg__solve(pg_world *world);
+
+/* island.c */
+void pg__update_sleep(pg_world *world);
+
+#endif

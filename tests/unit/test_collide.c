@@ -1,0 +1,900 @@
+/* test_collide.c — narrowphase geometry: unit directions, manifolds for every pair of
+ * primitive kinds, feature ids, symmetry (argument swap, mirroring), ray casts,
+ * containment, overlap and bounding boxes.
+ *
+ * Doubles are used only to build inputs and as references for inexact results.
+ */
+#include "pg_test.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "geom.h"
+
+#define Q30 1073741824.0
+#define SPEC ((pg_fix)1311) /* 0.02 m */
+
+static pg_fix fx(double v) { return (pg_fix)llround(v * 65536.0); }
+static double dbl(pg_fix v) { return (double)v / 65536.0; }
+static pg_vec2 vv(double x, double y) { return pg_v2(fx(x), fx(y)); }
+
+static pg_geom blank(void)
+{
+    pg_geom g;
+    memset(&g, 0, sizeof g);
+    return g;
+}
+
+static pg_geom make_circle(double x, double y, double r)
+{
+    pg_geom g = blank();
+    g.count = 1;
+    g.vertices[0] = vv(x, y);
+    g.centroid = g.vertices[0];
+    g.radius = fx(r);
+    return g;
+}
+
+/* Normals from the vertices (counter-clockwise). */
+static void set_normals(pg_geom *g)
+{
+    int32_t i;
+    int64_t sx = 0, sy = 0;
+    for (i = 0; i < g->count; ++i) {
+        pg_vec2 a = g->vertices[i], b = g->vertices[(i + 1) % g->count];
+        g->normals[i] = pg_dir_normalize((int64_t)b.y - a.y, -((int64_t)b.x - a.x));
+        sx += a.x;
+        sy += a.y;
+    }
+    g->centroid = pg_v2((pg_fix)(sx / g->count), (pg_fix)(sy / g->count));
+}
+
+static pg_geom make_poly(const double *xy, int count, double r)
+{
+    pg_geom g = blank();
+    int i;
+    g.count = count;
+    for (i = 0; i < count; ++i) g.vertices[i] = vv(xy[2 * i], xy[2 * i + 1]);
+    set_normals(&g);
+    g.radius = fx(r);
+    return g;
+}
+
+static pg_geom make_capsule(double x1, double y1, double x2, double y2, double r)
+{
+    double xy[4];
+    xy[0] = x1; xy[1] = y1; xy[2] = x2; xy[3] = y2;
+    return make_poly(xy, 2, r);
+}
+
+static pg_angle angle_of(double radians)
+{
+    double turns = radians / (2.0 * PGT_PI);
+    turns -= floor(turns);
+    return (pg_angle)(uint32_t)llround(turns * 4294967296.0);
+}
+
+/* A box with half extents (hw, hh), centred at (x, y), rotated by `radians`: built in
+ * its local frame with exact axis normals and placed with pg_geom_transform. */
+static pg_geom make_box(double hw, double hh, double x, double y, double radians)
+{
+    pg_geom local = blank(), world;
+    local.count = 4;
+    local.vertices[0] = vv(-hw, -hh);
+    local.vertices[1] = vv(hw, -hh);
+    local.vertices[2] = vv(hw, hh);
+    local.vertices[3] = vv(-hw, hh);
+    local.normals[0].x = 0; local.normals[0].y = -(1 << 30);
+    local.normals[1].x = 1 << 30; local.normals[1].y = 0;
+    local.normals[2].x = 0; local.normals[2].y = 1 << 30;
+    local.normals[3].x = -(1 << 30); local.normals[3].y = 0;
+    pg_geom_transform(&local, vv(x, y), radians == 0.0 ? pg_rot_identity() : pg_rot_from_angle(angle_of(radians)), &world);
+    return world;
+}
+
+/* Mirror in x (x -> -x) and rewind counter-clockwise. */
+static pg_geom mirror(const pg_geom *g)
+{
+    pg_geom m = *g;
+    int32_t c = g->count, k;
+    for (k = 0; k < c; ++k) {
+        pg_vec2 v = g->vertices[c - 1 - k];
+        pg_dir n = g->normals[((c - 2 - k) % c + c) % c];
+        m.vertices[k] = pg_v2(-v.x, v.y);
+        m.normals[k].x = -n.x;
+        m.normals[k].y = n.y;
+    }
+    m.centroid.x = -g->centroid.x;
+    return m;
+}
+
+static pg_manifold collide(const pg_geom *a, const pg_geom *b, pg_fix spec)
+{
+    pg_manifold m;
+    memset(&m, 0xA5, sizeof m); /* pg_collide must fill everything */
+    pg_collide(a, b, spec, &m);
+    return m;
+}
+
+static double ndx(pg_dir n) { return n.x / Q30; }
+static double ndy(pg_dir n) { return n.y / Q30; }
+
+static void expect_near(double got, double want, double tol, const char *what)
+{
+    if (!(fabs(got - want) <= tol)) {
+        print_error("%s: got %.9f want %.9f (tol %.3g)\n", what, got, want, tol);
+        fail();
+    }
+}
+
+/* Unit length within a few LSB. */
+static void expect_unit(pg_dir n)
+{
+    double l = sqrt((double)n.x * n.x + (double)n.y * n.y);
+    expect_near(l, Q30, 4.0, "normal length (Q30 units)");
+}
+
+/* ---- pg_dir_normalize --------------------------------------------------------------- */
+
+static void test_dir_normalize(void **state)
+{
+    pgt_rng rng = pgt_rng_seed(12345);
+    double worst = 0.0;
+    int i;
+    (void)state;
+    {
+        pg_dir z = pg_dir_normalize(0, 0);
+        assert_int_equal(z.x, 0);
+        assert_int_equal(z.y, 0);
+    }
+    {
+        pg_dir a = pg_dir_normalize(5, 0), b = pg_dir_normalize(0, -7), c = pg_dir_normalize(INT64_MAX, INT64_MAX);
+        PG_EXPECT_EQ(a.x, 1 << 30, "%s", "x axis");
+        PG_EXPECT_EQ(a.y, 0, "%s", "x axis");
+        PG_EXPECT_EQ(b.x, 0, "%s", "-y axis");
+        PG_EXPECT_EQ(b.y, -(1 << 30), "%s", "-y axis");
+        PG_EXPECT_EQ(c.x, c.y, "%s", "diagonal");
+        expect_near(c.x, Q30 / sqrt(2.0), 1.0, "huge diagonal");
+    }
+    for (i = 0; i < 200000; ++i) {
+        int bits = 1 + (int)pgt_below(&rng, 62);
+        int64_t x = (int64_t)(pgt_next(&rng) >> (64 - bits)), y = (int64_t)(pgt_next(&rng) >> (64 - bits));
+        pg_dir d, e, f;
+        double l;
+        if (pgt_next(&rng) & 1) x = -x;
+        if (pgt_next(&rng) & 1) y = -y;
+        if (pgt_below(&rng, 4) == 0) y >>= pgt_below(&rng, 40); /* very unequal magnitudes */
+        if (x == 0 && y == 0) continue;
+        d = pg_dir_normalize(x, y);
+        l = sqrt((double)x * x + (double)y * y);
+        {
+            double ex = fabs(d.x - (double)x / l * Q30), ey = fabs(d.y - (double)y / l * Q30);
+            if (ex > worst) worst = ex;
+            if (ey > worst) worst = ey;
+        }
+        e = pg_dir_normalize(-x, -y);
+        f = pg_dir_normalize(y, x);
+        PG_EXPECT_EQ(e.x, -d.x, "sign symmetry x=%lld y=%lld", (long long)x, (long long)y);
+        PG_EXPECT_EQ(e.y, -d.y, "sign symmetry x=%lld y=%lld", (long long)x, (long long)y);
+        PG_EXPECT_EQ(f.x, d.y, "swap symmetry x=%lld y=%lld", (long long)x, (long long)y);
+        PG_EXPECT_EQ(f.y, d.x, "swap symmetry x=%lld y=%lld", (long long)x, (long long)y);
+    }
+    PG_EXPECT_LE(worst, 1.5, "%s", "max error in Q30 LSB");
+}
+
+/* ---- circles -------------------------------------------------------------------------- */
+
+static void test_circle_circle(void **state)
+{
+    /* touching exactly: reported with separation 0 (<= speculative 0) */
+    pg_geom a = make_circle(2, 2, 0.5), b = make_circle(3, 2, 0.5);
+    pg_manifold m;
+    (void)state;
+    m = collide(&a, &b, 0);
+    PG_EXPECT_EQ(m.count, 1, "%s", "touching");
+    PG_EXPECT_EQ(m.points[0].separation, 0, "%s", "touching");
+    PG_EXPECT_EQ(m.points[0].point.x, fx(2.5), "%s", "contact between");
+    PG_EXPECT_EQ(m.normal.x, 1 << 30, "%s", "+x");
+}
+
+static void test_circle_circle_cases(void **state)
+{
+    pg_manifold m;
+    (void)state;
+    {   /* overlap by 0.2 along (0.6, 0.8) */
+        pg_geom a = make_circle(1, 2, 0.5), b = make_circle(1.48, 2.64, 0.3);
+        m = collide(&a, &b, 0);
+        PG_EXPECT_EQ(m.count, 1, "%s", "overlap");
+        expect_near(ndx(m.normal), 0.6, 2e-9, "nx");
+        expect_near(ndy(m.normal), 0.8, 2e-9, "ny");
+        expect_near(dbl(m.points[0].separation), -0.2, 2.0 / 65536, "separation");
+        /* midway: A's surface at 1 + 0.5 n, B's at 1.48 - 0.3 n: midpoint = A + 0.4 n */
+        expect_near(dbl(m.points[0].point.x), 1 + 0.4 * 0.6, 2.0 / 65536, "px");
+        expect_near(dbl(m.points[0].point.y), 2 + 0.4 * 0.8, 2.0 / 65536, "py");
+        PG_EXPECT_EQ(m.points[0].id, 0x20000u, "%s", "circle id");
+        /* swapped: normal reversed, same separation */
+        m = collide(&b, &a, 0);
+        expect_near(ndx(m.normal), -0.6, 2e-9, "swap nx");
+        expect_near(dbl(m.points[0].separation), -0.2, 2.0 / 65536, "swap separation");
+    }
+    {   /* separated by 0.05: reported only within the speculative window */
+        pg_geom a = make_circle(0, 0, 0.5), b = make_circle(1.05, 0, 0.5);
+        m = collide(&a, &b, 0);
+        PG_EXPECT_EQ(m.count, 0, "%s", "separated, no speculation");
+        m = collide(&a, &b, fx(0.04));
+        PG_EXPECT_EQ(m.count, 0, "%s", "window too small");
+        m = collide(&a, &b, fx(0.06));
+        PG_EXPECT_EQ(m.count, 1, "%s", "inside the window");
+        PG_EXPECT_EQ(m.normal.x, 1 << 30, "%s", "normal +x");
+        PG_EXPECT_EQ(m.normal.y, 0, "%s", "normal +x");
+        PG_EXPECT_EQ(m.points[0].separation, fx(1.05) - fx(1.0), "%s", "exact separation");
+        PG_EXPECT_EQ(m.points[0].point.x, (fx(1.05)) / 2, "%s", "midway (rounded)");
+    }
+}
+
+static void test_circle_box(void **state)
+{
+    pg_geom box = make_box(1, 0.5, 0, 0, 0);
+    pg_manifold m;
+    (void)state;
+    {   /* above the top face, overlapping by 0.1 */
+        pg_geom c = make_circle(0.3, 0.8, 0.4);
+        m = collide(&box, &c, 0);
+        PG_EXPECT_EQ(m.count, 1, "%s", "face");
+        PG_EXPECT_EQ(m.normal.x, 0, "%s", "face normal");
+        PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "face normal");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.8) - fx(0.5) - fx(0.4), "%s", "separation");
+        expect_near(dbl(m.points[0].point.y), 0.45, 1.0 / 65536, "midway y");
+        PG_EXPECT_EQ(m.points[0].point.x, fx(0.3), "%s", "x");
+        PG_EXPECT_EQ(m.points[0].id, 0x00000200u, "%s", "face 2 of A (top), circle 0");
+        /* circle as A */
+        m = collide(&c, &box, 0);
+        PG_EXPECT_EQ(m.normal.y, -(1 << 30), "%s", "reversed");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.8) - fx(0.5) - fx(0.4), "%s", "same separation");
+        PG_EXPECT_EQ(m.points[0].id, 0x00010002u, "%s", "B's face 2");
+    }
+    {   /* side face, deep: centre inside the box */
+        pg_geom c = make_circle(0.9, 0.1, 0.3);
+        m = collide(&box, &c, 0);
+        PG_EXPECT_EQ(m.count, 1, "%s", "deep");
+        PG_EXPECT_EQ(m.normal.x, 1 << 30, "%s", "right face");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.9) - fx(1.0) - fx(0.3), "%s", "separation");
+    }
+    {   /* corner region: normal along corner -> centre */
+        pg_geom c = make_circle(1.3, 0.9, 0.6); /* offset (0.3, 0.4): distance 0.5 */
+        m = collide(&box, &c, 0);
+        PG_EXPECT_EQ(m.count, 1, "%s", "corner");
+        expect_near(ndx(m.normal), 0.6, 2e-9, "corner nx");
+        expect_near(ndy(m.normal), 0.8, 2e-9, "corner ny");
+        expect_near(dbl(m.points[0].separation), -0.1, 1.0 / 65536, "corner separation");
+        expect_near(dbl(m.points[0].point.x), 1 + 0.6 * -0.05, 2.0 / 65536, "corner px");
+        expect_near(dbl(m.points[0].point.y), 0.5 + 0.8 * -0.05, 2.0 / 65536, "corner py");
+        PG_EXPECT_EQ(m.points[0].id, 0x20200u, "%s", "vertex 2 of A");
+        /* out of reach */
+        c = make_circle(1.3, 0.9, 0.45);
+        m = collide(&box, &c, 0);
+        PG_EXPECT_EQ(m.count, 0, "%s", "corner apart by 0.05");
+        m = collide(&box, &c, fx(0.06));
+        PG_EXPECT_EQ(m.count, 1, "%s", "corner speculative");
+    }
+}
+
+static void test_segment_circle(void **state)
+{
+    pg_geom seg = make_capsule(-1, 0, 1, 0, 0);
+    pg_manifold m;
+    (void)state;
+    {   /* above the middle */
+        pg_geom c = make_circle(0.25, 0.3, 0.4);
+        m = collide(&seg, &c, 0);
+        PG_EXPECT_EQ(m.count, 1, "%s", "middle");
+        PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "up");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.3) - fx(0.4), "%s", "separation");
+        /* below */
+        c = make_circle(0.25, -0.3, 0.4);
+        m = collide(&seg, &c, 0);
+        PG_EXPECT_EQ(m.normal.y, -(1 << 30), "%s", "down");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.3) - fx(0.4), "%s", "separation below");
+    }
+    {   /* beyond the end on the segment's line: the end point's region */
+        pg_geom c = make_circle(1.2, 0, 0.3);
+        m = collide(&seg, &c, 0);
+        PG_EXPECT_EQ(m.count, 1, "%s", "end");
+        PG_EXPECT_EQ(m.normal.x, 1 << 30, "%s", "+x");
+        PG_EXPECT_EQ(m.normal.y, 0, "%s", "+x");
+        PG_EXPECT_EQ(m.points[0].separation, fx(1.2) - fx(1.0) - fx(0.3), "%s", "separation");
+        /* capsule radius adds */
+        seg.radius = fx(0.05);
+        m = collide(&c, &seg, 0);
+        PG_EXPECT_EQ(m.normal.x, -(1 << 30), "%s", "circle as A");
+        PG_EXPECT_EQ(m.points[0].separation, fx(1.2) - fx(1.0) - fx(0.3) - fx(0.05), "%s", "with radius");
+        seg.radius = 0;
+    }
+    {   /* off the end diagonally */
+        pg_geom c = make_circle(-1.3, -0.4, 0.6);
+        m = collide(&seg, &c, 0);
+        expect_near(ndx(m.normal), -0.6, 2e-9, "nx");
+        expect_near(ndy(m.normal), -0.8, 2e-9, "ny");
+        expect_near(dbl(m.points[0].separation), -0.1, 1.0 / 65536, "sep");
+    }
+}
+
+/* ---- boxes ------------------------------------------------------------------------------- */
+
+static void test_box_box_resting(void **state)
+{
+    pg_geom ground = make_box(5, 0.5, 0, -0.5, 0);
+    pg_geom box = make_box(0.5, 0.5, 0, 0.49, 0); /* 0.01 deep */
+    pg_manifold m;
+    int i;
+    (void)state;
+    m = collide(&ground, &box, SPEC);
+    PG_EXPECT_EQ(m.count, 2, "%s", "two points");
+    PG_EXPECT_EQ(m.normal.x, 0, "%s", "exact normal");
+    PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "exact normal");
+    PG_EXPECT_EQ(m.points[0].separation, m.points[1].separation, "%s", "equal separations");
+    PG_EXPECT_EQ(m.points[0].separation, fx(0.49) - fx(0.5), "%s", "depth");
+    PG_EXPECT_EQ(m.points[0].point.x, -m.points[1].point.x, "%s", "symmetric points");
+    PG_EXPECT_EQ(labs((long)m.points[0].point.x), fx(0.5), "%s", "x = +-half width");
+    for (i = 0; i < 2; ++i) {
+        /* midway between y = 0 (ground) and y = -0.01 (box bottom) */
+        expect_near(dbl(m.points[i].point.y), -0.005, 1.0 / 65536, "midway");
+        PG_EXPECT_EQ(m.points[i].id >> 16, 0, "%s", "A's face is the reference");
+        PG_EXPECT_EQ((m.points[i].id >> 8) & 0xFF, 2, "%s", "A's top face");
+    }
+    assert_true(m.points[0].id != m.points[1].id);
+    PG_EXPECT_EQ(m.points[0].id & 0xFF, 0, "%s", "incident vertices are the box bottom 0 and 1");
+    PG_EXPECT_EQ(m.points[1].id & 0xFF, 1, "%s", "incident vertices are the box bottom 0 and 1");
+
+    /* Two equal boxes stacked exactly: tie between A's top and B's bottom -> A. */
+    {
+        pg_geom lower = make_box(0.5, 0.5, 3, 0.5, 0), upper = make_box(0.5, 0.5, 3, 1.5, 0);
+        m = collide(&lower, &upper, SPEC);
+        PG_EXPECT_EQ(m.count, 2, "%s", "stacked");
+        PG_EXPECT_EQ(m.normal.x, 0, "%s", "stacked normal");
+        PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "stacked normal");
+        PG_EXPECT_EQ(m.points[0].separation, 0, "%s", "touching");
+        PG_EXPECT_EQ(m.points[1].separation, 0, "%s", "touching");
+        PG_EXPECT_EQ(m.points[0].id >> 16, 0, "%s", "A reference");
+        PG_EXPECT_EQ(m.points[0].point.y, fx(1.0), "%s", "on the interface");
+        PG_EXPECT_EQ(m.points[0].point.x + m.points[1].point.x, 2 * fx(3), "%s", "symmetric about x = 3");
+        /* swapped: B (now the lower box) keeps the reference when it is A */
+        m = collide(&upper, &lower, SPEC);
+        PG_EXPECT_EQ(m.normal.y, -(1 << 30), "%s", "swapped stacked normal");
+        PG_EXPECT_EQ(m.points[0].id >> 16, 0, "%s", "A (upper) reference");
+        PG_EXPECT_EQ(m.points[0].separation, 0, "%s", "swapped touching");
+    }
+    /* Hovering within the speculative distance, and beyond it. */
+    {
+        pg_geom hover = make_box(0.5, 0.5, 0, 0.51, 0);
+        m = collide(&ground, &hover, SPEC);
+        PG_EXPECT_EQ(m.count, 2, "%s", "speculative pair");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.01), "%s", "gap");
+        PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "speculative normal");
+        hover = make_box(0.5, 0.5, 0, 0.53, 0);
+        m = collide(&ground, &hover, SPEC);
+        PG_EXPECT_EQ(m.count, 0, "%s", "beyond speculative");
+    }
+}
+
+static void test_box_offset_sideways(void **state)
+{
+    pg_geom ground = make_box(5, 0.5, 0, -0.5, 0);
+    pg_geom box = make_box(0.5, 0.5, 4.8, 0.48, 0); /* overhangs the right edge */
+    pg_manifold m;
+    pg_fix xs[2];
+    (void)state;
+    m = collide(&ground, &box, SPEC);
+    PG_EXPECT_EQ(m.count, 2, "%s", "two points");
+    PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "up");
+    xs[0] = m.points[0].point.x < m.points[1].point.x ? m.points[0].point.x : m.points[1].point.x;
+    xs[1] = m.points[0].point.x < m.points[1].point.x ? m.points[1].point.x : m.points[0].point.x;
+    PG_EXPECT_EQ(xs[0], fx(4.8) - fx(0.5), "%s", "box corner");
+    PG_EXPECT_EQ(xs[1], fx(5.0), "%s", "clipped at the ground's edge");
+    PG_EXPECT_EQ(m.points[0].separation, fx(0.48) - fx(0.5), "%s", "depth");
+    PG_EXPECT_EQ(m.points[1].separation, fx(0.48) - fx(0.5), "%s", "depth");
+    expect_near(dbl(m.points[0].point.y), -0.01, 1.0 / 65536, "midway");
+
+    /* box wider than its support: both points clipped, at the support's corners */
+    {
+        pg_geom post = make_box(0.2, 1, 0, 0, 0), plank = make_box(2, 0.1, 0.3, 1.095, 0);
+        m = collide(&post, &plank, SPEC);
+        PG_EXPECT_EQ(m.count, 2, "%s", "plank");
+        PG_EXPECT_EQ(m.points[0].point.x + m.points[1].point.x, 0, "%s", "at +-0.2");
+        PG_EXPECT_EQ(labs((long)m.points[0].point.x), fx(0.2), "%s", "at +-0.2");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.995) - fx(1.0), "%s", "depth");
+        PG_EXPECT_EQ(m.points[1].separation, fx(0.995) - fx(1.0), "%s", "depth");
+    }
+}
+
+/* Double reference: separation of b from a along the unit axis n (support functions). */
+static double ref_separation(const pg_geom *a, const pg_geom *b, pg_dir nd)
+{
+    double nx = ndx(nd), ny = ndy(nd), l = sqrt(nx * nx + ny * ny), maxa = -1e300, minb = 1e300;
+    int i;
+    nx /= l;
+    ny /= l;
+    for (i = 0; i < a->count; ++i) {
+        double p = dbl(a->vertices[i].x) * nx + dbl(a->vertices[i].y) * ny;
+        if (p > maxa) maxa = p;
+    }
+    for (i = 0; i < b->count; ++i) {
+        double p = dbl(b->vertices[i].x) * nx + dbl(b->vertices[i].y) * ny;
+        if (p < minb) minb = p;
+    }
+    return minb - maxa - dbl(a->radius) - dbl(b->radius);
+}
+
+static void test_box_box_rotated(void **state)
+{
+    int deg, dir;
+    (void)state;
+    for (deg = 0; deg < 360; deg += 7) {
+        for (dir = 0; dir < 2; ++dir) {
+            double ang = deg * PGT_PI / 180.0, c = cos(ang), s = sin(ang);
+            /* lowest point of the rotated box 0.03 below the ground's top */
+            double low = 0.6 * fabs(s) + 0.4 * fabs(c);
+            pg_geom ground = make_box(4, 0.5, 0.1, -0.5, 0.02 * dir);
+            pg_geom box = make_box(0.6, 0.4, 0.3, low - 0.03, ang);
+            pg_manifold m = dir ? collide(&box, &ground, SPEC) : collide(&ground, &box, SPEC);
+            double want, got = 1e300;
+            int i;
+            assert_true(m.count >= 1);
+            expect_unit(m.normal);
+            want = dir ? ref_separation(&box, &ground, m.normal) : ref_separation(&ground, &box, m.normal);
+            for (i = 0; i < m.count; ++i)
+                if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
+            if (fabs(got - want) > 3.0 / 65536) {
+                print_error("deg %d dir %d: separation %.8f, reference %.8f\n", deg, dir, got, want);
+                fail();
+            }
+            /* the normal points from A to B */
+            if (dir) assert_true(m.normal.y < 0);
+            else assert_true(m.normal.y > 0);
+        }
+    }
+    /* two rotated boxes in the air, corner into face */
+    {
+        pg_geom a = make_box(0.5, 0.5, 0, 0, 0.3), b = make_box(0.5, 0.5, 0.95, 0.3, 1.0);
+        pg_manifold m = collide(&a, &b, SPEC);
+        double want;
+        int i;
+        assert_true(m.count >= 1);
+        want = ref_separation(&a, &b, m.normal);
+        if (m.points[0].id >> 16 == 1) { /* B's face is the reference: measure along it */
+            pg_dir nb;
+            nb.x = -m.normal.x;
+            nb.y = -m.normal.y;
+            want = ref_separation(&b, &a, nb);
+        }
+        for (i = 0; i < m.count; ++i) assert_true(dbl(m.points[i].separation) >= want - 3.0 / 65536);
+        expect_near(dbl(m.points[0].separation < (m.count > 1 ? m.points[1].separation : INT32_MAX) ? m.points[0].separation : m.points[1].separation),
+                    want, 3.0 / 65536, "rotated pair depth");
+    }
+}
+
+static void test_feature_ids_stable(void **state)
+{
+    pg_geom ground = make_box(5, 0.5, 0, -0.5, 0);
+    pg_manifold first, m;
+    int k;
+    (void)state;
+    {
+        pg_geom box = make_box(0.5, 0.5, 0, 0.495, 0.01);
+        first = collide(&ground, &box, SPEC);
+    }
+    assert_int_equal(first.count, 2);
+    for (k = 1; k <= 20; ++k) {
+        pg_geom box = make_box(0.5, 0.5, 0.005 * k, 0.495 + 0.0002 * (k % 3), 0.01 - 0.0005 * k);
+        m = collide(&ground, &box, SPEC);
+        assert_int_equal(m.count, 2);
+        PG_EXPECT_EQ(m.points[0].id, first.points[0].id, "step %d", k);
+        PG_EXPECT_EQ(m.points[1].id, first.points[1].id, "step %d", k);
+    }
+}
+
+/* ---- capsules and segments ---------------------------------------------------------- */
+
+static void test_capsule_on_box(void **state)
+{
+    pg_geom box = make_box(2, 0.5, 0, 0, 0);
+    pg_geom cap = make_capsule(-1, 0.74, 1, 0.74, 0.25); /* 0.01 deep */
+    pg_manifold m;
+    (void)state;
+    m = collide(&box, &cap, SPEC);
+    PG_EXPECT_EQ(m.count, 2, "%s", "lying flat");
+    PG_EXPECT_EQ(m.normal.x, 0, "%s", "up");
+    PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "up");
+    PG_EXPECT_EQ(m.points[0].separation, fx(0.74) - fx(0.5) - fx(0.25), "%s", "depth");
+    PG_EXPECT_EQ(m.points[1].separation, fx(0.74) - fx(0.5) - fx(0.25), "%s", "depth");
+    PG_EXPECT_EQ(m.points[0].point.x + m.points[1].point.x, 0, "%s", "points under the ends");
+    PG_EXPECT_EQ(labs((long)m.points[0].point.x), fx(1), "%s", "points under the ends");
+    expect_near(dbl(m.points[0].point.y), 0.495, 1.0 / 65536, "midway");
+    /* the capsule as A */
+    m = collide(&cap, &box, SPEC);
+    PG_EXPECT_EQ(m.count, 2, "%s", "swapped");
+    PG_EXPECT_EQ(m.normal.y, -(1 << 30), "%s", "down");
+    PG_EXPECT_EQ(m.points[0].separation, fx(0.74) - fx(0.5) - fx(0.25), "%s", "depth");
+    PG_EXPECT_EQ(labs((long)m.points[0].point.x), fx(1), "%s", "points under the ends");
+    /* tilted slightly: still two points, different depths */
+    cap = make_capsule(-1, 0.74, 1, 0.76, 0.25);
+    m = collide(&box, &cap, SPEC);
+    PG_EXPECT_EQ(m.count, 2, "%s", "tilted");
+    PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "tilted normal");
+    assert_true(m.points[0].separation != m.points[1].separation);
+}
+
+static void test_capsule_corner(void **state)
+{
+    pg_geom box = make_box(1, 1, 0, 0, 0);
+    pg_geom cap = make_capsule(1.2, 1.3, 3.2, 1.3, 0.25);
+    pg_manifold m;
+    double d = sqrt(0.2 * 0.2 + 0.3 * 0.3);
+    (void)state;
+    m = collide(&box, &cap, fx(0.2));
+    PG_EXPECT_EQ(m.count, 1, "%s", "one point");
+    expect_near(ndx(m.normal), 0.2 / d, 2e-9, "corner normal x");
+    expect_near(ndy(m.normal), 0.3 / d, 2e-9, "corner normal y");
+    expect_near(dbl(m.points[0].separation), d - 0.25, 1.0 / 65536, "separation");
+    expect_near(dbl(m.points[0].point.x), 1 + 0.2 / d * (d - 0.25) / 2, 2.0 / 65536, "midway x");
+    expect_near(dbl(m.points[0].point.y), 1 + 0.3 / d * (d - 0.25) / 2, 2.0 / 65536, "midway y");
+    PG_EXPECT_EQ(m.points[0].id >> 16, 2, "%s", "vertex-vertex");
+    PG_EXPECT_EQ((m.points[0].id >> 8) & 0xFF, 2, "%s", "box corner 2");
+    PG_EXPECT_EQ(m.points[0].id & 0xFF, 0, "%s", "capsule end 0");
+    m = collide(&box, &cap, fx(0.1));
+    PG_EXPECT_EQ(m.count, 0, "%s", "out of speculative reach");
+    /* overlapping corner (the cores apart, the rounded end into the corner) */
+    cap = make_capsule(1.1, 1.15, 3.1, 1.15, 0.25);
+    m = collide(&cap, &box, 0);
+    PG_EXPECT_EQ(m.count, 1, "%s", "overlapping end");
+    d = sqrt(0.1 * 0.1 + 0.15 * 0.15);
+    expect_near(ndx(m.normal), -0.1 / d, 2e-9, "reversed corner normal x");
+    expect_near(ndy(m.normal), -0.15 / d, 2e-9, "reversed corner normal y");
+    expect_near(dbl(m.points[0].separation), d - 0.25, 1.0 / 65536, "separation");
+}
+
+static void test_capsule_capsule(void **state)
+{
+    pg_manifold m;
+    (void)state;
+    {   /* parallel, overlapping in x over [-0.5, 1] */
+        pg_geom a = make_capsule(-1, 0, 1, 0, 0.25), b = make_capsule(-0.5, 0.45, 1.5, 0.45, 0.25);
+        m = collide(&a, &b, SPEC);
+        PG_EXPECT_EQ(m.count, 2, "%s", "parallel");
+        PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "up");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.45) - fx(0.5), "%s", "depth");
+        PG_EXPECT_EQ(m.points[1].separation, fx(0.45) - fx(0.5), "%s", "depth");
+        {
+            pg_fix lo = m.points[0].point.x < m.points[1].point.x ? m.points[0].point.x : m.points[1].point.x;
+            pg_fix hi = m.points[0].point.x < m.points[1].point.x ? m.points[1].point.x : m.points[0].point.x;
+            PG_EXPECT_EQ(lo, fx(-0.5), "%s", "overlap start");
+            PG_EXPECT_EQ(hi, fx(1), "%s", "overlap end");
+        }
+        expect_near(dbl(m.points[0].point.y), 0.225, 1.0 / 65536, "midway");
+    }
+    {   /* end to end on one line: vertex-vertex */
+        pg_geom a = make_capsule(-1, 0, 1, 0, 0.25), b = make_capsule(1.4, 0, 3, 0, 0.25);
+        m = collide(&a, &b, SPEC);
+        PG_EXPECT_EQ(m.count, 1, "%s", "end to end");
+        PG_EXPECT_EQ(m.normal.x, 1 << 30, "%s", "+x");
+        PG_EXPECT_EQ(m.normal.y, 0, "%s", "+x");
+        PG_EXPECT_EQ(m.points[0].separation, fx(1.4) - fx(1) - fx(0.5), "%s", "separation");
+        PG_EXPECT_EQ(m.points[0].point.x, (fx(1.4) + fx(1)) / 2, "%s", "midway");
+    }
+    {   /* crossed: B stands on A's middle, cores apart by 0.45 */
+        pg_geom a = make_capsule(-1, 0, 1, 0, 0.25), b = make_capsule(0, 0.45, 0, 2.45, 0.25);
+        m = collide(&a, &b, SPEC);
+        PG_EXPECT_EQ(m.count, 1, "%s", "crossed");
+        PG_EXPECT_EQ(m.normal.x, 0, "%s", "up");
+        PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "up");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.45) - fx(0.5), "%s", "depth");
+        PG_EXPECT_EQ(m.points[0].point.x, 0, "%s", "x");
+        expect_near(dbl(m.points[0].point.y), 0.225, 1.0 / 65536, "midway");
+    }
+    {   /* crossed as an X: the cores intersect */
+        pg_geom a = make_capsule(-1, 0, 1, 0, 0.1), b = make_capsule(0.2, -0.6, 0.2, 1.4, 0.1);
+        int i;
+        m = collide(&a, &b, SPEC);
+        assert_true(m.count >= 1);
+        expect_unit(m.normal);
+        for (i = 0; i < m.count; ++i) assert_true(m.points[i].separation < 0);
+        /* the cheapest way apart: move B up by 0.6 (+ radii) */
+        PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "up");
+        PG_EXPECT_EQ(m.points[0].separation, -fx(0.6) - fx(0.2), "%s", "depth");
+    }
+    {   /* slightly skewed, apart: 1 or 2 points, normal from the closest features */
+        pg_geom a = make_capsule(-1, 0, 1, 0, 0.25), b = make_capsule(-1, 0.6, 1, 0.52, 0.25);
+        m = collide(&a, &b, fx(0.2));
+        PG_EXPECT_EQ(m.count, 2, "%s", "almost parallel");
+        PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "A's face normal");
+    }
+}
+
+static void test_triangle_box(void **state)
+{
+    static const double tri[6] = {0.1, -0.1, 1, 1, -1, 1.2};
+    pg_geom box = make_box(2, 0.5, 0, -0.5, 0);
+    pg_geom t = make_poly(tri, 3, 0);
+    pg_manifold m;
+    (void)state;
+    m = collide(&box, &t, SPEC);
+    PG_EXPECT_EQ(m.count, 1, "%s", "tip");
+    PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "up");
+    PG_EXPECT_EQ(m.points[0].separation, -fx(0.1), "%s", "depth");
+    PG_EXPECT_EQ(m.points[0].point.x, fx(0.1), "%s", "tip x");
+    expect_near(dbl(m.points[0].point.y), -0.05, 1.0 / 65536, "midway");
+    PG_EXPECT_EQ(m.points[0].id & 0xFF, 0, "%s", "vertex 0 of the triangle");
+    m = collide(&t, &box, SPEC);
+    PG_EXPECT_EQ(m.count, 1, "%s", "swapped");
+    PG_EXPECT_EQ(m.normal.y, -(1 << 30), "%s", "down");
+    PG_EXPECT_EQ(m.points[0].separation, -fx(0.1), "%s", "depth");
+    PG_EXPECT_EQ(m.points[0].point.x, fx(0.1), "%s", "tip x");
+    /* lying on its long side: two points */
+    {
+        static const double flat[6] = {-1, 0.01, 1, 0.01, 0, 1};
+        pg_geom f = make_poly(flat, 3, 0);
+        m = collide(&box, &f, SPEC);
+        PG_EXPECT_EQ(m.count, 2, "%s", "flat");
+        PG_EXPECT_EQ(m.points[0].separation, fx(0.01), "%s", "speculative gap");
+        PG_EXPECT_EQ(m.points[0].point.x + m.points[1].point.x, 0, "%s", "symmetric");
+    }
+}
+
+/* ---- symmetry ----------------------------------------------------------------------------- */
+
+static int same_point(const pg_manifold_point *p, const pg_manifold_point *q, int mirror_x, int tol)
+{
+    pg_fix qx = mirror_x ? -q->point.x : q->point.x;
+    return abs(p->point.x - qx) <= tol && abs(p->point.y - q->point.y) <= tol && abs(p->separation - q->separation) <= tol;
+}
+
+static void expect_matching(const pg_manifold *m, const pg_manifold *w, int mirror_x, int tol, const char *what)
+{
+    int i, j;
+    PG_EXPECT_EQ(m->count, w->count, "%s", what);
+    for (i = 0; i < m->count; ++i) {
+        int found = 0;
+        for (j = 0; j < w->count; ++j) found |= same_point(&m->points[i], &w->points[j], mirror_x, tol);
+        if (!found) {
+            print_error("%s: point %d (%d, %d) sep %d has no match\n", what, i, m->points[i].point.x, m->points[i].point.y,
+                        m->points[i].separation);
+            fail();
+        }
+    }
+}
+
+typedef struct pair_case { pg_geom a, b; pg_fix spec; const char *name; } pair_case;
+
+static int make_cases(pair_case *c)
+{
+    static const double tri[6] = {0.13, -0.07, 1, 1, -1, 1.2};
+    int n = 0;
+    c[n].a = make_box(4, 0.5, 0.1, -0.5, 0); c[n].b = make_box(0.6, 0.4, 0.3, 0.4, 0.4); c[n].spec = SPEC; c[n++].name = "rotated box on ground";
+    c[n].a = make_box(5, 0.5, 0, -0.5, 0); c[n].b = make_box(0.5, 0.5, 4.8, 0.48, 0); c[n].spec = SPEC; c[n++].name = "overhanging box";
+    c[n].a = make_box(0.5, 0.5, 0, 0, 0.3); c[n].b = make_box(0.5, 0.5, 0.95, 0.3, 1.0); c[n].spec = SPEC; c[n++].name = "two rotated boxes";
+    c[n].a = make_box(1, 1, 0, 0, 0); c[n].b = make_capsule(1.2, 1.3, 3.2, 1.3, 0.25); c[n].spec = fx(0.2); c[n++].name = "capsule corner";
+    c[n].a = make_box(2, 0.5, 0, -0.5, 0.05); c[n].b = make_poly(tri, 3, 0); c[n].spec = SPEC; c[n++].name = "triangle";
+    c[n].a = make_box(1, 0.5, 0.2, 0, 0.7); c[n].b = make_circle(1.3, 0.9, 0.6); c[n].spec = SPEC; c[n++].name = "circle corner";
+    c[n].a = make_capsule(-1, 0.1, 1, -0.05, 0.25); c[n].b = make_capsule(-0.5, 0.45, 1.5, 0.52, 0.25); c[n].spec = SPEC; c[n++].name = "capsules";
+    c[n].a = make_circle(0.3, 0.1, 0.5); c[n].b = make_circle(1.1, 0.7, 0.55); c[n].spec = SPEC; c[n++].name = "circles";
+    c[n].a = make_capsule(-1, 0, 1, 0.3, 0); c[n].b = make_circle(0.4, 0.5, 0.4); c[n].spec = SPEC; c[n++].name = "segment circle";
+    c[n].a = make_box(0.5, 0.5, 3, 0.5, 0); c[n].b = make_box(0.5, 0.5, 3, 1.5, 0); c[n].spec = SPEC; c[n++].name = "stacked";
+    return n;
+}
+
+static void test_mirror_symmetry(void **state)
+{
+    pair_case cases[16];
+    int n = make_cases(cases), k;
+    (void)state;
+    for (k = 0; k < n; ++k) {
+        pg_geom ma = mirror(&cases[k].a), mb = mirror(&cases[k].b);
+        pg_manifold m = collide(&cases[k].a, &cases[k].b, cases[k].spec), w = collide(&ma, &mb, cases[k].spec);
+        assert_true(m.count >= 1);
+        PG_EXPECT_EQ(w.normal.x, -m.normal.x, "%s", cases[k].name);
+        PG_EXPECT_EQ(w.normal.y, m.normal.y, "%s", cases[k].name);
+        expect_matching(&m, &w, 1, 0, cases[k].name);
+    }
+}
+
+static void test_swap_arguments(void **state)
+{
+    pair_case cases[16];
+    int n = make_cases(cases), k;
+    (void)state;
+    for (k = 0; k < n; ++k) {
+        pg_manifold m = collide(&cases[k].a, &cases[k].b, cases[k].spec), w = collide(&cases[k].b, &cases[k].a, cases[k].spec);
+        double dot = ((double)m.normal.x * w.normal.x + (double)m.normal.y * w.normal.y) / (Q30 * Q30);
+        assert_true(m.count >= 1);
+        if (dot > -0.999999) {
+            print_error("%s: normals not opposite (%d %d) (%d %d)\n", cases[k].name, m.normal.x, m.normal.y, w.normal.x, w.normal.y);
+            fail();
+        }
+        expect_matching(&m, &w, 0, 2, cases[k].name);
+    }
+}
+
+/* ---- queries -------------------------------------------------------------------------------- */
+
+static void test_raycast(void **state)
+{
+    pg_fix t;
+    pg_vec2 p;
+    pg_dir n;
+    (void)state;
+    {   /* circle */
+        pg_geom c = make_circle(0, 0, 1);
+        double hx = -sqrt(1 - 0.25);
+        assert_true(pg_geom_raycast(&c, vv(-5, 0.5), vv(10, 0), PG_FIX_ONE, &t, &p, &n));
+        expect_near(dbl(t), (hx + 5) / 10, 2.0 / 65536, "circle t");
+        expect_near(dbl(p.x), hx, 2.0 / 65536, "circle x");
+        expect_near(dbl(p.y), 0.5, 1.0 / 65536, "circle y");
+        expect_near(ndx(n), hx, 1e-8, "circle nx");
+        expect_near(ndy(n), 0.5, 1e-8, "circle ny");
+        assert_false(pg_geom_raycast(&c, vv(-5, 0.5), vv(10, 0), fx(0.4), &t, &p, &n)); /* too short */
+        assert_false(pg_geom_raycast(&c, vv(-5, 1.1), vv(10, 0), PG_FIX_ONE, &t, &p, &n)); /* beside */
+        assert_false(pg_geom_raycast(&c, vv(5, 0.5), vv(10, 0), PG_FIX_ONE, &t, &p, &n));  /* away */
+        assert_false(pg_geom_raycast(&c, vv(0.2, 0.1), vv(10, 0), PG_FIX_ONE, &t, &p, &n)); /* inside */
+    }
+    {   /* box */
+        pg_geom b = make_box(1, 0.5, 0, 0, 0);
+        assert_true(pg_geom_raycast(&b, vv(-5, 0.2), vv(10, 0), PG_FIX_ONE, &t, &p, &n));
+        PG_EXPECT_EQ(t, fx(0.4), "%s", "box t");
+        PG_EXPECT_EQ(p.x, fx(-1), "%s", "box x");
+        PG_EXPECT_EQ(n.x, -(1 << 30), "%s", "box normal");
+        PG_EXPECT_EQ(n.y, 0, "%s", "box normal");
+        /* diagonal from above-right into the top face */
+        assert_true(pg_geom_raycast(&b, vv(1.5, 2.5), vv(-1, -2), fx(2), &t, &p, &n));
+        expect_near(dbl(t), 1.0, 2.0 / 65536, "diagonal t");
+        expect_near(dbl(p.x), 0.5, 2.0 / 65536, "diagonal x");
+        PG_EXPECT_EQ(n.y, 1 << 30, "%s", "top normal");
+        /* through a corner exactly */
+        assert_true(pg_geom_raycast(&b, vv(2, 1.5), vv(-2, -2), PG_FIX_ONE, &t, &p, &n));
+        expect_near(dbl(t), 0.5, 2.0 / 65536, "corner t");
+        assert_false(pg_geom_raycast(&b, vv(-5, 0.6), vv(10, 0), PG_FIX_ONE, &t, &p, &n)); /* above */
+        /* rotated box: compare with a double computation */
+        {
+            pg_geom r = make_box(1, 0.5, 0.3, -0.2, 0.6);
+            double best = 1e300;
+            int i;
+            assert_true(pg_geom_raycast(&r, vv(-4, 0.1), vv(8, 0.5), PG_FIX_ONE, &t, &p, &n));
+            for (i = 0; i < 4; ++i) { /* intersect with each edge line */
+                double ax = dbl(r.vertices[i].x), ay = dbl(r.vertices[i].y);
+                double bx = dbl(r.vertices[(i + 1) % 4].x), by = dbl(r.vertices[(i + 1) % 4].y);
+                double ex = bx - ax, ey = by - ay, den = 8 * ey - 0.5 * ex;
+                double tt, uu;
+                if (den == 0) continue;
+                tt = ((ax + 4) * ey - (ay - 0.1) * ex) / den;
+                uu = ((ax + 4) * 0.5 - (ay - 0.1) * 8) / den;
+                if (uu >= 0 && uu <= 1 && tt < best) best = tt;
+            }
+            expect_near(dbl(t), best, 2.0 / 65536, "rotated box t");
+        }
+    }
+    {   /* capsule: side and end */
+        pg_geom cap = make_capsule(-1, 0, 1, 0, 0.5);
+        assert_true(pg_geom_raycast(&cap, vv(0.3, 3), vv(0, -4), PG_FIX_ONE, &t, &p, &n));
+        expect_near(dbl(t), 2.5 / 4, 1.0 / 65536, "side t");
+        PG_EXPECT_EQ(n.y, 1 << 30, "%s", "side normal");
+        PG_EXPECT_EQ(p.y, fx(0.5), "%s", "side y");
+        assert_true(pg_geom_raycast(&cap, vv(4, 0.3), vv(-4, 0), PG_FIX_ONE, &t, &p, &n));
+        expect_near(dbl(p.x), 1 + 0.4, 2.0 / 65536, "end x");
+        expect_near(ndx(n), 0.8, 1e-8, "end nx");
+        expect_near(ndy(n), 0.6, 1e-8, "end ny");
+        expect_near(dbl(t), (4 - 1.4) / 4, 2.0 / 65536, "end t");
+        assert_false(pg_geom_raycast(&cap, vv(4, 0.6), vv(-8, 0), PG_FIX_ONE, &t, &p, &n));
+    }
+    {   /* segment (radius 0) from below */
+        pg_geom seg = make_capsule(-1, 1, 1, 1, 0);
+        assert_true(pg_geom_raycast(&seg, vv(0.5, 0), vv(0, 2), PG_FIX_ONE, &t, &p, &n));
+        PG_EXPECT_EQ(t, PG_FIX_HALF, "%s", "segment t");
+        PG_EXPECT_EQ(n.y, -(1 << 30), "%s", "segment normal faces the ray");
+    }
+}
+
+static void test_contains(void **state)
+{
+    pg_geom c = make_circle(1, 1, 0.5), b = make_box(1, 0.5, 0, 0, 0.3), cap = make_capsule(-1, 0, 1, 0, 0.5);
+    (void)state;
+    assert_true(pg_geom_contains(&c, vv(1.3, 1.3)));
+    assert_true(pg_geom_contains(&c, vv(1.5, 1)));   /* boundary */
+    assert_false(pg_geom_contains(&c, vv(1.36, 1.36)));
+    assert_true(pg_geom_contains(&b, vv(0, 0)));
+    assert_true(pg_geom_contains(&b, vv(0.9 * cos(0.3), 0.9 * sin(0.3))));
+    assert_false(pg_geom_contains(&b, vv(1.1 * cos(0.3), 1.1 * sin(0.3))));
+    assert_true(pg_geom_contains(&cap, vv(1.3, 0.3)));  /* in the rounded end */
+    assert_false(pg_geom_contains(&cap, vv(1.4, 0.4))); /* beyond it, inside the bounding box */
+    assert_true(pg_geom_contains(&cap, vv(0, -0.49)));
+    assert_false(pg_geom_contains(&cap, vv(0, -0.51)));
+}
+
+static void test_overlap(void **state)
+{
+    pg_geom a = make_box(0.5, 0.5, 0, 0, 0), b = make_box(0.5, 0.5, 0.99, 0, 0), touching = make_box(0.5, 0.5, 1, 0, 0);
+    pg_geom far = make_box(0.5, 0.5, 1.01, 0, 0), c = make_circle(1.3, 0, 0.31), cap = make_capsule(0, 0.8, 2, 0.8, 0.29);
+    (void)state;
+    assert_true(pg_geom_overlap(&a, &b));
+    assert_false(pg_geom_overlap(&a, &touching));
+    assert_false(pg_geom_overlap(&a, &far));
+    assert_true(pg_geom_overlap(&a, &c));
+    assert_true(pg_geom_overlap(&c, &a));
+    assert_false(pg_geom_overlap(&a, &cap));
+    cap.radius = fx(0.31);
+    assert_true(pg_geom_overlap(&cap, &a));
+}
+
+static void test_aabb(void **state)
+{
+    pg_geom cap = make_capsule(-1, 0.5, 2, -0.25, 0.25), c = make_circle(3, 4, 1.5), b = make_box(1, 0.5, 0, 0, PGT_PI / 2);
+    pg_aabb box;
+    (void)state;
+    box = pg_geom_aabb(&cap);
+    PG_EXPECT_EQ(box.lo.x, fx(-1.25), "%s", "capsule lo x");
+    PG_EXPECT_EQ(box.lo.y, fx(-0.5), "%s", "capsule lo y");
+    PG_EXPECT_EQ(box.hi.x, fx(2.25), "%s", "capsule hi x");
+    PG_EXPECT_EQ(box.hi.y, fx(0.75), "%s", "capsule hi y");
+    box = pg_geom_aabb(&c);
+    PG_EXPECT_EQ(box.lo.x, fx(1.5), "%s", "circle");
+    PG_EXPECT_EQ(box.hi.y, fx(5.5), "%s", "circle");
+    box = pg_geom_aabb(&b);
+    expect_near(dbl(box.hi.x), 0.5, 2.0 / 65536, "rotated box");
+    expect_near(dbl(box.hi.y), 1.0, 2.0 / 65536, "rotated box");
+}
+
+static void test_transform(void **state)
+{
+    pg_geom b = make_box(1, 0.5, 2, 3, PGT_PI / 6);
+    int i;
+    (void)state;
+    PG_EXPECT_EQ(b.count, 4, "%s", "count");
+    for (i = 0; i < 4; ++i) expect_unit(b.normals[i]);
+    expect_near(ndx(b.normals[1]), cos(PGT_PI / 6), 4e-9, "rotated normal");
+    expect_near(dbl(b.vertices[2].x), 2 + cos(PGT_PI / 6) - 0.5 * sin(PGT_PI / 6), 2.0 / 65536, "vertex");
+    expect_near(dbl(b.centroid.x), 2, 1.0 / 65536, "centroid");
+}
+
+/* Large coordinates (near the +-1000 m envelope) behave like small ones. */
+static void test_far_from_origin(void **state)
+{
+    pg_geom ground = make_box(5, 0.5, 990, -995.5, 0), box = make_box(0.5, 0.5, 990.2, -994.51, 0);
+    pg_manifold m;
+    (void)state;
+    m = collide(&ground, &box, SPEC);
+    PG_EXPECT_EQ(m.count, 2, "%s", "far");
+    PG_EXPECT_EQ(m.normal.y, 1 << 30, "%s", "far normal");
+    PG_EXPECT_EQ(m.points[0].separation, fx(-994.51) - fx(-995) - fx(0.5), "%s", "far depth");
+    {
+        pg_geom c1 = make_circle(-999, 999, 1), c2 = make_circle(-997.2, 999.6, 1);
+        m = collide(&c1, &c2, SPEC);
+        PG_EXPECT_EQ(m.count, 1, "%s", "far circles");
+        expect_near(dbl(m.points[0].separation), sqrt(1.8 * 1.8 + 0.6 * 0.6) - 2, 1.0 / 65536, "far circles sep");
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_dir_normalize),
+        cmocka_unit_test(test_circle_circle),
+        cmocka_unit_test(test_circle_circle_cases),
+        cmocka_unit_test(test_circle_box),
+        cmocka_unit_test(test_segment_circle),
+        cmocka_unit_test(test_box_box_resting),
+        cmocka_unit_test(test_box_offset_sideways),
+        cmocka_unit_test(test_box_box_rotated),
+        cmocka_unit_test(test_feature_ids_stable),
+        cmocka_unit_test(test_capsule_on_box),
+        cmocka_unit_test(test_capsule_corner),
+        cmocka_unit_test(test_capsule_capsule),
+        cmocka_unit_test(test_triangle_box),
+        cmocka_unit_test(test_mirror_symmetry),
+        cmocka_unit_test(test_swap_arguments),
+        cmocka_unit_test(test_raycast),
+        cmocka_unit_test(test_contains),
+        cmocka_unit_test(test_overlap),
+        cmocka_unit_test(test_aabb),
+        cmocka_unit_test(test_transform),
+        cmocka_unit_test(test_far_from_origin),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
