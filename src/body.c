@@ -378,6 +378,7 @@ static pg_result set_material(pg_world *world, pg_body_id id, int which, pg_fix 
         else world->shapes[s].density = value;
     }
     if (which == 2) pg__body_update_mass(world, id.index);
+    else pg__refresh_contact_materials(world, id.index);
     pg__wake_body(world, id.index);
     return PG_OK;
 }

@@ -113,11 +113,14 @@ static pg_vec2 pg__add_half(pg_vec2 p, pg_dir n, int64_t k)
     return pg_v2(pg__sat64(p.x + pg__round_shift64(k * n.x, 31)), pg__sat64(p.y + pg__round_shift64(k * n.y, 31)));
 }
 
-/* (a + b) / 2 + n * (k / 2), k in Q16.16, rounded once per component. */
+/* (a + b) / 2 + n * (k / 2), k in Q16.16, rounded once per component. Written as
+ * a + ((b - a) + k n) / 2 so that only a difference is rounded: the result is exactly
+ * translation invariant as well as mirror symmetric (rounding (a + b) / 2 directly would
+ * round ties by the sign of a + b, which a translation can change). */
 static pg_vec2 pg__mid_half(pg_vec2 a, pg_vec2 b, pg_dir n, int64_t k)
 {
-    return pg_v2(pg__sat64(pg__round_shift64(((int64_t)a.x + b.x) * PG__Q30 + k * n.x, 31)),
-                 pg__sat64(pg__round_shift64(((int64_t)a.y + b.y) * PG__Q30 + k * n.y, 31)));
+    return pg_v2(pg__sat64(a.x + pg__round_shift64(((int64_t)b.x - a.x) * PG__Q30 + k * n.x, 31)),
+                 pg__sat64(a.y + pg__round_shift64(((int64_t)b.y - a.y) * PG__Q30 + k * n.y, 31)));
 }
 
 static void pg__clear(pg_manifold *m)
@@ -226,13 +229,16 @@ static int64_t pg__max_separation(const pg_geom *a, const pg_geom *b, int32_t *e
 }
 
 /* Squared distance (Q32.32) from p to the segment a..b whose unit normal is n; *end is
- * 0 or 1 when the closest point is a or b, -1 when it is inside the segment. */
+ * 0 or 1 when the closest point is a or b, -1 when it is inside the segment. A point
+ * that projects beyond an end by at most PG__REF_TOLERANCE still counts as inside (its
+ * perpendicular distance is used): edges that are flush, as in a column of equal boxes,
+ * then keep a two-point manifold instead of flickering to a corner contact. */
 static int64_t pg__point_segment(pg_vec2 p, pg_vec2 a, pg_vec2 b, pg_dir n, int *end)
 {
     pg_dir t = pg__tangent(n);
-    int64_t d;
-    if (pg__dot46((int64_t)p.x - a.x, (int64_t)p.y - a.y, t) <= 0) { *end = 0; return pg__dist2(p, a); }
-    if (pg__dot46((int64_t)b.x - p.x, (int64_t)b.y - p.y, t) <= 0) { *end = 1; return pg__dist2(p, b); }
+    int64_t d, slack = -PG__REF_TOLERANCE * PG__Q30;
+    if (pg__dot46((int64_t)p.x - a.x, (int64_t)p.y - a.y, t) < slack) { *end = 0; return pg__dist2(p, a); }
+    if (pg__dot46((int64_t)b.x - p.x, (int64_t)b.y - p.y, t) < slack) { *end = 1; return pg__dist2(p, b); }
     *end = -1;
     d = pg__round_shift64(pg__dot46((int64_t)p.x - a.x, (int64_t)p.y - a.y, n), 30);
     return d * d;

@@ -48,8 +48,13 @@ static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact
     c->body_b = w->shapes[sb].body;
     c->normal = m.normal;
     c->point_count = m.count;
-    c->friction = mix_friction(w->shapes[sa].friction, w->shapes[sb].friction);
-    c->restitution = mix_restitution(w->shapes[sa].restitution, w->shapes[sb].restitution);
+    if (old != NULL) { /* materials change only through pg__refresh_contact_materials */
+        c->friction = old->friction;
+        c->restitution = old->restitution;
+    } else {
+        c->friction = mix_friction(w->shapes[sa].friction, w->shapes[sb].friction);
+        c->restitution = mix_restitution(w->shapes[sa].restitution, w->shapes[sb].restitution);
+    }
     for (i = 0; i < 2; ++i) {
         pg_contact_point *p = &c->points[i];
         p->point = i < m.count ? m.points[i].point : pg_v2_zero();
@@ -166,4 +171,15 @@ void pg__remove_body_contacts(pg_world *w, uint32_t body_index)
         w->contacts[out++] = *c;
     }
     w->contact_count = out;
+}
+
+void pg__refresh_contact_materials(pg_world *w, uint32_t body_index)
+{
+    uint32_t i;
+    for (i = 0; i < w->contact_count; ++i) {
+        pg_contact *c = &w->contacts[i];
+        if (c->body_a != body_index && c->body_b != body_index) continue;
+        c->friction = mix_friction(w->shapes[c->shape_a].friction, w->shapes[c->shape_b].friction);
+        c->restitution = mix_restitution(w->shapes[c->shape_a].restitution, w->shapes[c->shape_b].restitution);
+    }
 }

@@ -87,21 +87,52 @@ static softness make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
 static int bit_length(uint64_t v)
 {
     int n = 0;
+    while (v >= 256u) { n += 8; v >>= 8; }
     while (v != 0) { ++n; v >>= 1; }
     return n;
 }
 
-/* round(num / den * 2^q) for |num / den| bounded so the result fits int32; den > 0 has
- * been normalised below 2^31 by the shift `s` applied to num as well. */
-static int32_t ratio_q(int64_t num, int s, int64_t den31, int q)
+/* One denominator, normalised: K scaled by 2^-shift into [2^30, 2^31), and its
+ * reciprocal 2^62 / K31 in (2^31, 2^32], so every ratio num / K costs a multiply. */
+typedef struct denominator { int shift; int64_t inv; } denominator;
+
+static denominator make_denominator(int64_t K)
 {
-    int64_t n = s > 0 ? pg__round_shift64(num, s) : num;
-    uint64_t un = pg__mag64(n), r;
-    if (den31 <= 0) return 0;
-    if (un >= (UINT64_C(1) << (62 - q))) return n < 0 ? -INT32_MAX : INT32_MAX; /* beyond any envelope value */
-    r = ((un << q) + (uint64_t)den31 / 2u) / (uint64_t)den31;
-    if (r > (uint64_t)INT32_MAX) r = (uint64_t)INT32_MAX;
-    return n < 0 ? -(int32_t)r : (int32_t)r;
+    denominator d;
+    int64_t K31;
+    d.shift = bit_length((uint64_t)K) - 31;
+    if (d.shift > 0) K31 = pg__round_shift64(K, d.shift);
+    else if (d.shift < 0) K31 = K * ((int64_t)1 << -d.shift);
+    else K31 = K;
+    d.inv = K31 > 0 ? (int64_t)(((UINT64_C(1) << 62) + (uint64_t)K31 / 2u) / (uint64_t)K31) : 0;
+    return d;
+}
+
+/* round(num / K * 2^q) for 16 <= q <= 30 with |num / K| < 2^(31 - q) (checked by the
+ * envelope: see the bounds at each caller). */
+static int32_t ratio_q(int64_t num, denominator d, int q)
+{
+    int64_t n = d.shift >= 0 ? (d.shift > 0 ? pg__round_shift64(num, d.shift) : num) : num * ((int64_t)1 << -d.shift);
+    int64_t r;
+    if (q == 30) {
+        r = pg__round_shift64(n * d.inv, 32); /* |n| <= K31 < 2^31 here: kA, kB <= 1 */
+    } else {
+        r = pg__round_shift64(n * (d.inv >> 8), 54 - q); /* |n| < 2^36, inv >> 8 <= 2^24 */
+    }
+    return (int32_t)(r > INT32_MAX ? INT32_MAX : r < -INT32_MAX ? -INT32_MAX : r);
+}
+
+/* Kt / Kn in Q16.16 from the two normalised reciprocals: (inv_n / inv_t) 2^(shift_t - shift_n). */
+static pg_fix k_ratio(denominator t, denominator n)
+{
+    int diff = t.shift - n.shift;
+    uint64_t r;
+    if (t.inv <= 0) return 0;
+    r = (((uint64_t)n.inv << 16) + (uint64_t)t.inv / 2u) / (uint64_t)t.inv; /* in [2^15, 2^17] */
+    if (diff >= 15) return PG_FIX_MAX;
+    if (diff >= 0) r <<= diff;
+    else r = diff <= -40 ? 0 : (r + ((uint64_t)1 << (-diff - 1))) >> -diff;
+    return r > (uint64_t)PG_FIX_MAX ? PG_FIX_MAX : (pg_fix)r;
 }
 
 /* (r x d) for a Q16 vector and a Q30 direction, rounded to Q16. */
@@ -109,32 +140,30 @@ static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return (pg_fix)pg__round_shift64((
 /* d . v for a Q30 direction and a Q16 vector, rounded to Q16. */
 static pg_fix dot_dv(pg_dir d, pg_vec2 v) { return (pg_fix)pg__round_shift64((int64_t)d.x * v.x + (int64_t)d.y * v.y, 30); }
 
-/* Coefficients of one row (normal or tangent) for one point. */
-static void row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation,
-                             int64_t *K_out, int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
+/* Coefficients of one row (normal or tangent) for one point; returns the row's
+ * normalised denominator. gA = invI_A (rA x d) / K is bounded by 1 / (2 k) for the
+ * radius of gyration k >= 0.0177 m in the envelope, so it fits Q8.24 easily. */
+static denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation,
+                                    int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
 {
     int64_t K = A->inv_mass + B->inv_mass, tA = 0, tB = 0;
     int32_t kA, kB;
-    int s;
+    denominator den;
     if (rotation) {
-        tA = pg__mul64_shr(A->inv_inertia, cA, 16); /* invI (r x d): Q38 per metre */
-        tB = pg__mul64_shr(B->inv_inertia, cB, 16);
-        K += pg__mul64_shr(tA, cA, 16) + pg__mul64_shr(tB, cB, 16);
+        tA = A->inv_inertia != 0 ? pg__mul64_shr(A->inv_inertia, cA, 16) : 0; /* invI (r x d): Q38 per metre */
+        tB = B->inv_inertia != 0 ? pg__mul64_shr(B->inv_inertia, cB, 16) : 0;
+        K += (tA != 0 ? pg__mul64_shr(tA, cA, 16) : 0) + (tB != 0 ? pg__mul64_shr(tB, cB, 16) : 0);
     }
-    *K_out = K;
-    s = bit_length((uint64_t)K) - 31;
-    if (s < 0) s = 0;
-    {
-        int64_t K31 = s > 0 ? pg__round_shift64(K, s) : K;
-        kA = ratio_q(A->inv_mass, s, K31, 30);
-        kB = ratio_q(B->inv_mass, s, K31, 30);
-        *lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
-        *lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
-        *lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
-        *lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
-        *gA = rotation ? ratio_q(tA, s, K31, 24) : 0;
-        *gB = rotation ? ratio_q(tB, s, K31, 24) : 0;
-    }
+    den = make_denominator(K);
+    kA = ratio_q(A->inv_mass, den, 30);
+    kB = ratio_q(B->inv_mass, den, 30);
+    *lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
+    *lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
+    *lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
+    *lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
+    *gA = tA != 0 ? ratio_q(tA, den, 24) : 0;
+    *gB = tB != 0 ? ratio_q(tB, den, 24) : 0;
+    return den;
 }
 
 typedef struct step_context {
@@ -146,72 +175,77 @@ typedef struct step_context {
     uint32_t effects;
 } step_context;
 
-static void apply_row(solver_body *A, solver_body *B, pg_fix lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y, int32_t gA, int32_t gB)
+/* Velocity change of one row. Products are int64 (|lambda| < 2^31, coefficients
+ * < 2^31) and every sum is clamped back into the pg_fix range, so nothing can wrap. */
+static inline void apply_row(solver_body *A, solver_body *B, int64_t lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y, int32_t gA, int32_t gB)
 {
-    A->v.x -= (pg_fix)pg__round_shift64((int64_t)lambda * lA_x, 30);
-    A->v.y -= (pg_fix)pg__round_shift64((int64_t)lambda * lA_y, 30);
-    A->w -= (pg_fix)pg__round_shift64((int64_t)lambda * gA, 24);
-    B->v.x += (pg_fix)pg__round_shift64((int64_t)lambda * lB_x, 30);
-    B->v.y += (pg_fix)pg__round_shift64((int64_t)lambda * lB_y, 30);
-    B->w += (pg_fix)pg__round_shift64((int64_t)lambda * gB, 24);
+    A->v.x = pg__sat64((int64_t)A->v.x - pg__round_shift64(lambda * lA_x, 30));
+    A->v.y = pg__sat64((int64_t)A->v.y - pg__round_shift64(lambda * lA_y, 30));
+    A->w = pg__sat64((int64_t)A->w - pg__round_shift64(lambda * gA, 24));
+    B->v.x = pg__sat64((int64_t)B->v.x + pg__round_shift64(lambda * lB_x, 30));
+    B->v.y = pg__sat64((int64_t)B->v.y + pg__round_shift64(lambda * lB_y, 30));
+    B->w = pg__sat64((int64_t)B->w + pg__round_shift64(lambda * gB, 24));
 }
 
-/* Relative velocity of B's anchor against A's along direction d (cA, cB: r x d). */
-static pg_fix relative_speed(const solver_body *A, const solver_body *B, pg_dir d, pg_fix cA, pg_fix cB)
+/* Relative velocity of B's anchor against A's along direction d (cA, cB: r x d), int64. */
+static inline int64_t relative_speed(const solver_body *A, const solver_body *B, pg_dir d, pg_fix cA, pg_fix cB)
 {
-    pg_vec2 dv = pg_v2((pg_fix)((int64_t)B->v.x - A->v.x), (pg_fix)((int64_t)B->v.y - A->v.y));
-    return dot_dv(d, dv) + (pg_fix)pg__round_shift64((int64_t)B->w * cB - (int64_t)A->w * cA, 16);
+    int64_t dvx = (int64_t)B->v.x - A->v.x, dvy = (int64_t)B->v.y - A->v.y; /* < 2^32 */
+    return pg__round_shift64(d.x * dvx + d.y * dvy, 30) + pg__round_shift64((int64_t)B->w * cB - (int64_t)A->w * cA, 16);
 }
 
-static pg_fix clamp_fix(int64_t v) { return pg__sat64(v); }
+/* Where anchor r of a body is now, relative to the body's centre at the step's start:
+ * (c - c0) + R(a - a0) r. Positions are within the envelope, so int64 holds it all. */
+static inline void anchor_now(const solver_body *b, pg_vec2 r, int64_t *x, int64_t *y)
+{
+    *x = (int64_t)b->c.x - b->c0.x + pg__round_shift64((int64_t)b->dq.c * r.x - (int64_t)b->dq.s * r.y, 30);
+    *y = (int64_t)b->c.y - b->c0.y + pg__round_shift64((int64_t)b->dq.s * r.x + (int64_t)b->dq.c * r.y, 30);
+}
 
 static void solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     const softness *soft = c->soft_static ? &ctx->soft_static : &ctx->soft;
+    const pg_dir n = c->n;
     pg_dir t;
     int32_t k;
-    t.x = c->n.y;
-    t.y = -c->n.x;
+    t.x = n.y;
+    t.y = -n.x;
     /* friction first: keeping bodies apart matters more than keeping them from sliding */
     if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
         for (k = 0; k < c->count; ++k) {
             constraint_point *p = &c->p[order ? c->count - 1 - k : k];
-            pg_fix vt = relative_speed(A, B, t, p->ctA, p->ctB);
-            pg_fix max_f = pg_fix_mul(p->friction_ratio, p->normal_impulse);
-            pg_fix acc = clamp_fix((int64_t)p->tangent_impulse - vt);
-            pg_fix lambda;
+            int64_t vt = relative_speed(A, B, t, p->ctA, p->ctB);
+            int64_t max_f = pg__round_shift64((int64_t)p->friction_ratio * p->normal_impulse, 16);
+            int64_t acc = (int64_t)p->tangent_impulse - vt;
             acc = acc < -max_f ? -max_f : acc > max_f ? max_f : acc;
-            lambda = acc - p->tangent_impulse;
-            p->tangent_impulse = acc;
-            apply_row(A, B, lambda, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+            acc = pg__sat64(acc);
+            apply_row(A, B, acc - p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+            p->tangent_impulse = (pg_fix)acc;
         }
     }
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[order ? c->count - 1 - k : k];
-        /* current separation from how far the anchors moved this step */
-        pg_vec2 dA = pg_v2_add(pg_v2_sub(A->c, A->c0), pg_rot_apply(A->dq, p->rA));
-        pg_vec2 dB = pg_v2_add(pg_v2_sub(B->c, B->c0), pg_rot_apply(B->dq, p->rB));
-        pg_fix s = dot_dv(c->n, pg_v2_sub(dB, dA)) + p->adjusted_separation;
-        int64_t bias = 0, mass_scale = PG_ROT_ONE, impulse_scale = 0, lambda, acc;
-        pg_fix vn;
+        int64_t ax, ay, bx, by, s, bias = 0, mass_scale = PG_ROT_ONE, impulse_scale = 0, lambda, acc;
+        /* current separation from where the anchors are now */
+        anchor_now(A, p->rA, &ax, &ay);
+        anchor_now(B, p->rB, &bx, &by);
+        s = pg__round_shift64(n.x * (bx - ax) + n.y * (by - ay), 30) + p->adjusted_separation;
         if (s > 0) {
-            bias = (int64_t)s * ctx->n; /* speculative: close the gap in one substep, no more */
+            bias = s * ctx->n; /* speculative: close the gap in one substep, no more */
         } else if (use_bias) {
             bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
             if (bias < -ctx->push_max) bias = -ctx->push_max;
             mass_scale = soft->mass_scale;
             impulse_scale = soft->impulse_scale;
         }
-        vn = relative_speed(A, B, c->n, p->cnA, p->cnB);
-        lambda = -pg__round_shift64(mass_scale * ((int64_t)vn + bias), 30) - pg__round_shift64(impulse_scale * p->normal_impulse, 30);
+        lambda = -pg__round_shift64(mass_scale * (relative_speed(A, B, n, p->cnA, p->cnB) + bias), 30) -
+                 pg__round_shift64(impulse_scale * p->normal_impulse, 30);
         acc = (int64_t)p->normal_impulse + lambda;
-        if (acc < 0) acc = 0;
-        if (acc > PG_FIX_MAX) acc = PG_FIX_MAX;
-        lambda = acc - p->normal_impulse;
+        acc = acc < 0 ? 0 : acc > PG_FIX_MAX ? PG_FIX_MAX : acc;
+        apply_row(A, B, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
         p->normal_impulse = (pg_fix)acc;
         if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
-        apply_row(A, B, (pg_fix)lambda, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
     }
 }
 
@@ -234,17 +268,15 @@ static void restitution(const step_context *ctx, constraint *c, solver_body *bod
     if (c->restitution == 0) return;
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
-        pg_fix vn;
         int64_t lambda, acc;
         if (p->relative_velocity > -threshold || p->max_normal_impulse == 0) continue;
-        vn = relative_speed(A, B, c->n, p->cnA, p->cnB);
-        lambda = -((int64_t)vn + pg_fix_mul(c->restitution, p->relative_velocity));
+        lambda = -(relative_speed(A, B, c->n, p->cnA, p->cnB) + pg_fix_mul(c->restitution, p->relative_velocity));
         acc = (int64_t)p->normal_impulse + lambda;
         if (acc < 0) acc = 0;
         if (acc > PG_FIX_MAX) acc = PG_FIX_MAX;
         lambda = acc - p->normal_impulse;
         p->normal_impulse = (pg_fix)acc;
-        apply_row(A, B, (pg_fix)lambda, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+        apply_row(A, B, lambda, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
     }
 }
 
@@ -353,7 +385,7 @@ void pg__solve(pg_world *w)
         for (k = 0; k < c->count; ++k) {
             constraint_point *p = &c->p[k];
             const pg_contact_point *cp = &ct->points[k];
-            int64_t Kn, Kt;
+            denominator dn, dt;
             p->rA = pg_v2_sub(cp->point, A->center);
             p->rB = pg_v2_sub(cp->point, B->center);
             p->adjusted_separation = cp->separation - dot_dv(c->n, pg_v2_sub(p->rB, p->rA));
@@ -361,23 +393,19 @@ void pg__solve(pg_world *w)
             p->cnB = cross_rd(p->rB, c->n);
             p->ctA = cross_rd(p->rA, t);
             p->ctB = cross_rd(p->rB, t);
-            row_coefficients(A, B, p->cnA, p->cnB, c->n, rotation, &Kn, &p->lnA_x, &p->lnA_y, &p->lnB_x, &p->lnB_y, &p->gnA, &p->gnB);
-            row_coefficients(A, B, p->ctA, p->ctB, t, rotation, &Kt, &p->ltA_x, &p->ltA_y, &p->ltB_x, &p->ltB_y, &p->gtA, &p->gtB);
+            dn = row_coefficients(A, B, p->cnA, p->cnB, c->n, rotation, &p->lnA_x, &p->lnA_y, &p->lnB_x, &p->lnB_y, &p->gnA, &p->gnB);
+            p->friction_ratio = 0;
+            p->ltA_x = p->ltA_y = p->ltB_x = p->ltB_y = p->gtA = p->gtB = 0;
             if ((effects & PG_EFFECT_FRICTION) != 0) {
-                int s = bit_length((uint64_t)Kn) - 31;
-                int64_t Kn31;
-                if (s < 0) s = 0;
-                Kn31 = s > 0 ? pg__round_shift64(Kn, s) : Kn;
-                p->friction_ratio = pg_fix_mul(ct->friction, ratio_q(Kt, s, Kn31, 16));
-            } else {
-                p->friction_ratio = 0;
+                dt = row_coefficients(A, B, p->ctA, p->ctB, t, rotation, &p->ltA_x, &p->ltA_y, &p->ltB_x, &p->ltB_y, &p->gtA, &p->gtB);
+                p->friction_ratio = pg_fix_mul(ct->friction, k_ratio(dt, dn));
             }
             p->normal_impulse = cp->normal_impulse;
             p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? cp->tangent_impulse : 0;
             p->max_normal_impulse = 0;
             {
                 solver_body *sa = &bodies[c->a], *sbb = &bodies[c->b];
-                p->relative_velocity = relative_speed(sa, sbb, c->n, p->cnA, p->cnB);
+                p->relative_velocity = pg__sat64(relative_speed(sa, sbb, c->n, p->cnA, p->cnB));
             }
         }
     }

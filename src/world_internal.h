@@ -136,6 +136,7 @@ int pg__body_is_active(const pg_body *b); /* awake and movable: takes part in th
 /* contact.c */
 pg_result pg__update_contacts(pg_world *world);
 void pg__remove_body_contacts(pg_world *world, uint32_t body_index);
+void pg__refresh_contact_materials(pg_world *world, uint32_t body_index); /* after a friction/restitution change */
 
 /* solver.c */
 size_t pg__solver_scratch_bytes(const pg_world_def *def);

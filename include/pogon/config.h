@@ -8,14 +8,16 @@
 #define POGON_CONFIG_H
 
 /* Entries per full turn of the sine table, as a power of two: 8 (256 entries, 1 KiB)
- * to 14 (16384 entries, 64 KiB). Sine and cosine interpolate linearly between entries;
- * the interpolation error is about (2 pi / 2^bits)^2 / 8: 4.7e-6 at 10 bits, which is
- * below half a Q16.16 step, and 2.9e-7 at 12 bits. */
+ * to 12 (4096 entries, 16 KiB). Sine and cosine interpolate linearly between entries;
+ * the interpolation error is about (2 pi / 2^bits)^2 / 8: 4.7e-6 at 10 bits and 2.9e-7
+ * at 12. The default is 12 because rotations scale vertices by up to that error: at
+ * 10 bits a vertex 50 m from its body's centre would wobble by 15 Q16.16 steps as the
+ * body turns, at 12 bits by one. */
 #ifndef PG_TRIG_TABLE_BITS
-#define PG_TRIG_TABLE_BITS 10
+#define PG_TRIG_TABLE_BITS 12
 #endif
-#if PG_TRIG_TABLE_BITS < 8 || PG_TRIG_TABLE_BITS > 14
-#error "PG_TRIG_TABLE_BITS must be between 8 and 14"
+#if PG_TRIG_TABLE_BITS < 8 || PG_TRIG_TABLE_BITS > 12
+#error "PG_TRIG_TABLE_BITS must be between 8 and 12"
 #endif
 
 #endif

@@ -1,0 +1,555 @@
+/* pogon-bench — how long does a step of a whole world take?
+ *
+ * Usage:
+ *   pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--json]
+ *       SCENE is pyramid (count = rows, default 20: 210 boxes), stack (count = boxes,
+ *       default 20) or rain (count = circles, default 1000).
+ *   pogon-bench all       pyramid, stack, rain at 1000, 2000, 4000, 8000, 16000, then the
+ *                         rain scaling table and the fitted exponent of ms ~ N^k.
+ *   pogon-bench effects [SCENE]
+ *                         the scene (default: pyramid and rain 4000) with every effect on,
+ *                         then with each PG_EFFECT_* off in turn, and a settled scene
+ *                         (steps 600..1200) with sleeping on and off.
+ *   pogon-bench memory    bytes pg_world_memory_size asks for, per scene.
+ *   pogon-bench compare   pogon next to Box2D 2.4.1 (the pogon-bench-box2d harness, run
+ *                         as a subprocess when it was built next to this program) for
+ *                         pyramid and rain 1000.
+ *
+ * Method: a run builds the scene (the shared tools/scenes code, memory from malloc),
+ * takes `warmup` untimed steps (0 unless stated), then times `steps` steps with
+ * clock_gettime(CLOCK_MONOTONIC) around the stepping only; a run's figure is its mean ms
+ * per step and the reported figure is the median over `repeat` runs (default 3). Steps
+ * default to 600 (pyramid, stack) and 300 (rain).
+ *
+ * For the scenes that should stand (pyramid, stack) the top box's displacement from
+ * where it started is reported: distance, dx, dy and its angle in degrees. The world is
+ * built and stepped in integers only; double is used for timing and for printing.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "pogon/pogon.h"
+#include "scenes.h"
+
+#define DEFAULT_REPEAT 3u
+#define SETTLE_STEPS 600u
+#define MAX_REPEAT 101u
+
+typedef struct options {
+    uint32_t count;   /* 0: the scene's default */
+    uint32_t steps;   /* 0: the scene's default */
+    uint32_t repeat;
+    int json;
+} options;
+
+typedef struct result {
+    const char *scene;
+    const char *label;      /* effects mode: the row's name */
+    uint32_t count, bodies, steps, warmup, repeat, effects;
+    double ms_per_step, steps_per_second, ms_min, ms_max;
+    int stands;             /* pyramid and stack: top displacement is meaningful */
+    double top_disp, dx, dy, angle_deg;
+    uint32_t awake_end, contacts_end, touching_end;
+    size_t memory_bytes;
+} result;
+
+/* ---- helpers ------------------------------------------------------------------------- */
+static double now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static double fix_to_double(int64_t q16) { return (double)q16 / 65536.0; }
+
+/* A binary angle as signed degrees in [-180, 180). */
+static double angle_to_degrees(pg_angle a)
+{
+    double t = (double)a;
+    if (a >= 0x80000000u) t -= 4294967296.0;
+    return t * (360.0 / 4294967296.0);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y ? 1 : 0;
+}
+
+static int is_scene(const char *s)
+{
+    return strcmp(s, "pyramid") == 0 || strcmp(s, "stack") == 0 || strcmp(s, "rain") == 0;
+}
+
+static uint32_t default_count(const char *scene) { return strcmp(scene, "rain") == 0 ? 1000u : 20u; }
+static uint32_t default_steps(const char *scene) { return strcmp(scene, "rain") == 0 ? 300u : 600u; }
+static int scene_stands(const char *scene) { return strcmp(scene, "rain") != 0; }
+
+static uint32_t scene_bodies(const char *scene, uint32_t count)
+{
+    if (strcmp(scene, "pyramid") == 0) return count * (count + 1u) / 2u;
+    return count;
+}
+
+static int parse_u32(const char *text, uint32_t *out)
+{
+    char *end;
+    unsigned long v;
+    if (text == NULL || *text < '0' || *text > '9') return 0;
+    errno = 0;
+    v = strtoul(text, &end, 10);
+    if (errno != 0 || *end != '\0' || v > 0xFFFFFFFFul) return 0;
+    *out = (uint32_t)v;
+    return 1;
+}
+
+/* ---- one measurement ------------------------------------------------------------------ */
+/* Build `scene` `repeat` times with `effects`, step `warmup` untimed then `steps` timed.
+ * Returns 0 on success; prints the failure otherwise. */
+static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t warmup, uint32_t repeat,
+                     uint32_t effects, result *res)
+{
+    double runs[MAX_REPEAT];
+    pg_world_def def;
+    size_t size;
+    uint32_t r, i;
+    if (count == 0) count = default_count(scene);
+    if (steps == 0) steps = default_steps(scene);
+    if (repeat == 0) repeat = DEFAULT_REPEAT;
+    if (repeat > MAX_REPEAT) repeat = MAX_REPEAT;
+    memset(res, 0, sizeof *res);
+    res->scene = scene;
+    res->count = count;
+    res->bodies = scene_bodies(scene, count);
+    res->steps = steps;
+    res->warmup = warmup;
+    res->repeat = repeat;
+    res->effects = effects;
+    res->stands = scene_stands(scene);
+    def = pg_scene_world_def(scene, count);
+    def.effects = effects;
+    size = pg_scene_memory_size(scene, count, &def);
+    res->memory_bytes = size;
+    if (size == 0) {
+        fprintf(stderr, "pogon-bench: %s %u: pg_world_memory_size refused the world definition\n", scene, count);
+        return 1;
+    }
+    for (r = 0; r < repeat; ++r) {
+        pg_scene sc;
+        pg_result pr;
+        pg_world_stats st;
+        double t0, t1;
+        void *memory = malloc(size); /* malloc's alignment is at least 8 */
+        if (memory == NULL) {
+            fprintf(stderr, "pogon-bench: %s %u: out of memory (%zu bytes)\n", scene, count, size);
+            return 1;
+        }
+        pr = pg_scene_build(scene, count, &def, memory, size, &sc);
+        if (pr != PG_OK) {
+            fprintf(stderr, "pogon-bench: building %s %u failed: %s (%s)\n", scene, count, pg_result_name(pr),
+                    sc.world != NULL ? pg_world_last_error(sc.world) : pg_result_message(pr));
+            free(memory);
+            return 1;
+        }
+        for (i = 0; i < warmup; ++i) {
+            pr = pg_world_step(sc.world);
+            if (pr != PG_OK) break;
+        }
+        t0 = now_ms();
+        for (i = 0; pr == PG_OK && i < steps; ++i) pr = pg_world_step(sc.world);
+        t1 = now_ms();
+        if (pr != PG_OK) {
+            fprintf(stderr, "pogon-bench: %s %u: pg_world_step failed: %s (%s)\n", scene, count, pg_result_name(pr),
+                    pg_world_last_error(sc.world));
+            free(memory);
+            return 1;
+        }
+        runs[r] = (t1 - t0) / (double)steps;
+        /* every run is bit-identical, so the last one's state is the state */
+        {
+            pg_vec2 p = pg_body_position(sc.world, sc.top);
+            int64_t dx = (int64_t)p.x - sc.top_start.x, dy = (int64_t)p.y - sc.top_start.y;
+            res->dx = fix_to_double(dx);
+            res->dy = fix_to_double(dy);
+            res->top_disp = sqrt(res->dx * res->dx + res->dy * res->dy);
+            res->angle_deg = angle_to_degrees(pg_body_angle(sc.world, sc.top));
+        }
+        st = pg_world_get_stats(sc.world);
+        res->awake_end = st.awake_body_count;
+        res->contacts_end = st.contact_count;
+        res->touching_end = st.touching_contact_count;
+        free(memory);
+    }
+    qsort(runs, repeat, sizeof runs[0], cmp_double);
+    res->ms_min = runs[0];
+    res->ms_max = runs[repeat - 1];
+    res->ms_per_step = (repeat & 1u) ? runs[repeat / 2] : 0.5 * (runs[repeat / 2 - 1] + runs[repeat / 2]);
+    res->steps_per_second = res->ms_per_step > 0.0 ? 1000.0 / res->ms_per_step : 0.0;
+    return 0;
+}
+
+/* ---- output --------------------------------------------------------------------------- */
+static void print_json(const result *r)
+{
+    printf("{\"engine\":\"pogon\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":%u,\"repeat\":%u,"
+           "\"effects\":%u,",
+           r->scene, r->count, r->bodies, r->steps, r->warmup, r->repeat, r->effects);
+    if (r->label != NULL) printf("\"variant\":\"%s\",", r->label);
+    printf("\"ms_per_step\":%.6f,\"ms_min\":%.6f,\"ms_max\":%.6f,\"steps_per_second\":%.2f,", r->ms_per_step, r->ms_min,
+           r->ms_max, r->steps_per_second);
+    if (r->stands)
+        printf("\"top_displacement_m\":%.6f,\"dx_m\":%.6f,\"dy_m\":%.6f,\"angle_deg\":%.4f,", r->top_disp, r->dx, r->dy,
+               r->angle_deg);
+    printf("\"awake_bodies\":%u,\"contacts\":%u,\"touching\":%u,\"memory_bytes\":%zu}\n", r->awake_end, r->contacts_end,
+           r->touching_end, r->memory_bytes);
+    fflush(stdout);
+}
+
+static void print_table_header(void)
+{
+    printf("| scene | count | bodies | steps | ms/step | steps/s | top disp m | dx m | dy m | angle deg | awake at end |\n");
+    printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+}
+
+static void print_table_row(const result *r)
+{
+    printf("| %s | %u | %u | %u | %.4f | %.1f | ", r->scene, r->count, r->bodies, r->steps, r->ms_per_step,
+           r->steps_per_second);
+    if (r->stands)
+        printf("%.5f | %+.5f | %+.5f | %+.3f | ", r->top_disp, r->dx, r->dy, r->angle_deg);
+    else
+        printf("- | - | - | - | ");
+    printf("%u |\n", r->awake_end);
+    fflush(stdout);
+}
+
+/* ---- modes ------------------------------------------------------------------------------ */
+static int mode_scene(const char *scene, const options *o)
+{
+    result r;
+    if (run_bench(scene, o->count, o->steps, 0, o->repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+    if (o->json) {
+        print_json(&r);
+    } else {
+        print_table_header();
+        print_table_row(&r);
+    }
+    return 0;
+}
+
+static const uint32_t rain_counts[] = {1000u, 2000u, 4000u, 8000u, 16000u};
+#define RAIN_N (sizeof rain_counts / sizeof rain_counts[0])
+
+static int mode_all(const options *o)
+{
+    result r, rain[RAIN_N];
+    size_t i;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, k;
+    if (!o->json) print_table_header();
+    if (run_bench("pyramid", 0, o->steps, 0, o->repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+    if (o->json) print_json(&r); else print_table_row(&r);
+    if (run_bench("stack", 0, o->steps, 0, o->repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+    if (o->json) print_json(&r); else print_table_row(&r);
+    for (i = 0; i < RAIN_N; ++i) {
+        if (run_bench("rain", rain_counts[i], o->steps, 0, o->repeat, PG_EFFECTS_ALL, &rain[i]) != 0) return 1;
+        if (o->json) print_json(&rain[i]); else print_table_row(&rain[i]);
+    }
+    for (i = 0; i < RAIN_N; ++i) {
+        double x = log((double)rain[i].count), y = log(rain[i].ms_per_step);
+        sx += x; sy += y; sxx += x * x; sxy += x * y;
+    }
+    k = ((double)RAIN_N * sxy - sx * sy) / ((double)RAIN_N * sxx - sx * sx);
+    if (o->json) {
+        printf("{\"engine\":\"pogon\",\"fit\":\"rain\",\"counts\":[1000,2000,4000,8000,16000],\"exponent\":%.4f,\"target\":1.2,"
+               "\"below_target\":%s}\n", k, k < 1.2 ? "true" : "false");
+        return 0;
+    }
+    printf("\nRain scaling (ms per step against circle count N):\n\n");
+    printf("| N | ms/step | us per body-step | step exponent vs previous N |\n");
+    printf("| ---: | ---: | ---: | ---: |\n");
+    for (i = 0; i < RAIN_N; ++i) {
+        printf("| %u | %.4f | %.4f | ", rain[i].count, rain[i].ms_per_step, 1000.0 * rain[i].ms_per_step / rain[i].count);
+        if (i == 0)
+            printf("- |\n");
+        else
+            printf("%.3f |\n", log(rain[i].ms_per_step / rain[i - 1].ms_per_step) /
+                                   log((double)rain[i].count / (double)rain[i - 1].count));
+    }
+    printf("\nLeast-squares fit of log(ms) against log(N): exponent k = %.3f (%s 1.2)\n", k,
+           k < 1.2 ? "below the target" : "NOT below the target");
+    return 0;
+}
+
+static const struct { uint32_t bit; const char *name; } effect_names[] = {
+    {PG_EFFECT_GRAVITY, "gravity"},       {PG_EFFECT_ROTATION, "rotation"}, {PG_EFFECT_FRICTION, "friction"},
+    {PG_EFFECT_RESTITUTION, "restitution"}, {PG_EFFECT_DAMPING, "damping"},   {PG_EFFECT_SLEEPING, "sleeping"},
+    {PG_EFFECT_CONTINUOUS, "continuous"},
+};
+#define EFFECT_N (sizeof effect_names / sizeof effect_names[0])
+
+static void print_effect_row(const result *r, double base)
+{
+    printf("| %s | 0x%02X | %u..%u | %.4f | %.2f | %u | ", r->label, r->effects, r->warmup, r->warmup + r->steps,
+           r->ms_per_step, base > 0.0 ? r->ms_per_step / base : 0.0, r->awake_end);
+    if (r->stands)
+        printf("%.5f |\n", r->top_disp);
+    else
+        printf("- |\n");
+    fflush(stdout);
+}
+
+static int effects_for(const char *scene, uint32_t count, const options *o)
+{
+    static char labels[EFFECT_N][32];
+    result r;
+    double base;
+    size_t i;
+    if (!o->json) {
+        if (count == 0) count = default_count(scene);
+        printf("\n%s, count %u (%u bodies), median of %u runs:\n\n", scene, count, scene_bodies(scene, count),
+               o->repeat ? o->repeat : DEFAULT_REPEAT);
+        printf("| effects | mask | steps | ms/step | vs all on | awake at end | top disp m |\n");
+        printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    }
+    if (run_bench(scene, count, o->steps, 0, o->repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+    r.label = "all on";
+    base = r.ms_per_step;
+    if (o->json) print_json(&r); else print_effect_row(&r, base);
+    for (i = 0; i < EFFECT_N; ++i) {
+        if (run_bench(scene, count, o->steps, 0, o->repeat, PG_EFFECTS_ALL & ~effect_names[i].bit, &r) != 0) return 1;
+        snprintf(labels[i], sizeof labels[i], "%s off", effect_names[i].name);
+        r.label = labels[i];
+        if (o->json) print_json(&r); else print_effect_row(&r, base);
+    }
+    if (run_bench(scene, count, SETTLE_STEPS, SETTLE_STEPS, o->repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+    r.label = "sleeping on, settled";
+    if (o->json) print_json(&r); else print_effect_row(&r, base);
+    if (run_bench(scene, count, SETTLE_STEPS, SETTLE_STEPS, o->repeat, PG_EFFECTS_ALL & ~PG_EFFECT_SLEEPING, &r) != 0) return 1;
+    r.label = "sleeping off, settled";
+    if (o->json) print_json(&r); else print_effect_row(&r, base);
+    return 0;
+}
+
+static int mode_effects(const char *scene, const options *o)
+{
+    if (scene != NULL) return effects_for(scene, o->count, o);
+    if (effects_for("pyramid", 0, o) != 0) return 1;
+    return effects_for("rain", 4000u, o);
+}
+
+static int mode_memory(const options *o)
+{
+    static const struct { const char *scene; uint32_t count; } list[] = {
+        {"pyramid", 20u}, {"stack", 20u}, {"rain", 1000u}, {"rain", 2000u}, {"rain", 4000u}, {"rain", 8000u}, {"rain", 16000u},
+    };
+    size_t i;
+    if (!o->json) {
+        printf("| scene | count | bodies | max_bodies | max_shapes | max_contacts | bytes | KiB | bytes per body slot |\n");
+        printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    }
+    for (i = 0; i < sizeof list / sizeof list[0]; ++i) {
+        pg_world_def d = pg_scene_world_def(list[i].scene, list[i].count);
+        size_t bytes = pg_world_memory_size(&d);
+        if (o->json)
+            printf("{\"engine\":\"pogon\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"max_bodies\":%u,\"max_shapes\":%u,"
+                   "\"max_contacts\":%u,\"memory_bytes\":%zu}\n",
+                   list[i].scene, list[i].count, scene_bodies(list[i].scene, list[i].count), d.max_bodies, d.max_shapes,
+                   d.max_contacts, bytes);
+        else
+            printf("| %s | %u | %u | %u | %u | %u | %zu | %.1f | %.0f |\n", list[i].scene, list[i].count,
+                   scene_bodies(list[i].scene, list[i].count), d.max_bodies, d.max_shapes, d.max_contacts, bytes,
+                   (double)bytes / 1024.0, d.max_bodies ? (double)bytes / d.max_bodies : 0.0);
+    }
+    {
+        pg_world_def d = pg_default_world_def();
+        size_t bytes = pg_world_memory_size(&d);
+        if (o->json)
+            printf("{\"engine\":\"pogon\",\"scene\":\"default_world_def\",\"max_bodies\":%u,\"max_shapes\":%u,"
+                   "\"max_contacts\":%u,\"memory_bytes\":%zu}\n", d.max_bodies, d.max_shapes, d.max_contacts, bytes);
+        else
+            printf("| (pg_default_world_def) | - | - | %u | %u | %u | %zu | %.1f | %.0f |\n", d.max_bodies, d.max_shapes,
+                   d.max_contacts, bytes, (double)bytes / 1024.0, d.max_bodies ? (double)bytes / d.max_bodies : 0.0);
+    }
+    return 0;
+}
+
+/* ---- compare: run the Box2D harness as a subprocess ---------------------------------- */
+/* The directory this program lives in, with a trailing '/', or "" when unknown. */
+static void self_dir(const char *argv0, char *out, size_t size)
+{
+    char path[4096];
+    ssize_t n = readlink("/proc/self/exe", path, sizeof path - 1);
+    char *slash;
+    if (n > 0) {
+        path[n] = '\0';
+    } else if (argv0 != NULL && strchr(argv0, '/') != NULL && strlen(argv0) < sizeof path) {
+        strcpy(path, argv0);
+    } else {
+        out[0] = '\0';
+        return;
+    }
+    slash = strrchr(path, '/');
+    slash[1] = '\0';
+    snprintf(out, size, "%s", path);
+}
+
+static int json_number(const char *line, const char *key, double *out)
+{
+    char pattern[64];
+    const char *p;
+    snprintf(pattern, sizeof pattern, "\"%s\":", key);
+    p = strstr(line, pattern);
+    if (p == NULL) return 0;
+    *out = strtod(p + strlen(pattern), NULL);
+    return 1;
+}
+
+typedef struct peer_result { int ok; double ms, sps, disp, dx, dy, angle; int has_disp; } peer_result;
+
+static peer_result run_peer(const char *exe, const char *scene, uint32_t count, uint32_t steps, uint32_t repeat)
+{
+    char cmd[4600], line[2048];
+    peer_result pr;
+    FILE *f;
+    memset(&pr, 0, sizeof pr);
+    snprintf(cmd, sizeof cmd, "'%s' %s --count %u --steps %u --repeat %u --json", exe, scene, count, steps, repeat);
+    f = popen(cmd, "r");
+    if (f == NULL) return pr;
+    while (fgets(line, sizeof line, f) != NULL) {
+        char want[64];
+        snprintf(want, sizeof want, "\"scene\":\"%s\"", scene);
+        if (strstr(line, want) == NULL) continue;
+        pr.ok = json_number(line, "ms_per_step", &pr.ms) && json_number(line, "steps_per_second", &pr.sps);
+        pr.has_disp = json_number(line, "top_displacement_m", &pr.disp);
+        json_number(line, "dx_m", &pr.dx);
+        json_number(line, "dy_m", &pr.dy);
+        json_number(line, "angle_deg", &pr.angle);
+    }
+    if (pclose(f) != 0) pr.ok = 0;
+    return pr;
+}
+
+static int mode_compare(const char *argv0, const options *o)
+{
+    static const struct { const char *scene; uint32_t count; } list[] = {{"pyramid", 20u}, {"rain", 1000u}};
+    char dir[4096], exe[4200];
+    int have_peer;
+    size_t i;
+    self_dir(argv0, dir, sizeof dir);
+    snprintf(exe, sizeof exe, "%spogon-bench-box2d", dir);
+    have_peer = access(exe, X_OK) == 0 && strchr(exe, '\'') == NULL;
+    if (!have_peer)
+        fprintf(stderr, "pogon-bench: %s not found (Box2D harness not built): pogon only\n", exe);
+    if (!o->json) {
+        printf("| scene | count | steps | pogon ms/step | box2d ms/step | pogon / box2d | pogon steps/s | box2d steps/s | "
+               "pogon top disp m | box2d top disp m |\n");
+        printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    }
+    for (i = 0; i < sizeof list / sizeof list[0]; ++i) {
+        result r;
+        peer_result p;
+        uint32_t repeat = o->repeat ? o->repeat : DEFAULT_REPEAT;
+        if (run_bench(list[i].scene, list[i].count, o->steps, 0, repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+        memset(&p, 0, sizeof p);
+        if (have_peer) {
+            p = run_peer(exe, list[i].scene, list[i].count, r.steps, repeat);
+            if (!p.ok) fprintf(stderr, "pogon-bench: %s %s gave no result\n", exe, list[i].scene);
+        }
+        if (o->json) {
+            print_json(&r);
+            if (p.ok)
+                printf("{\"compare\":\"%s\",\"count\":%u,\"steps\":%u,\"pogon_ms_per_step\":%.6f,\"box2d_ms_per_step\":%.6f,"
+                       "\"ratio\":%.4f}\n", r.scene, r.count, r.steps, r.ms_per_step, p.ms,
+                       p.ms > 0.0 ? r.ms_per_step / p.ms : 0.0);
+            continue;
+        }
+        printf("| %s | %u | %u | %.4f | ", r.scene, r.count, r.steps, r.ms_per_step);
+        if (p.ok)
+            printf("%.4f | %.2f | %.1f | %.1f | ", p.ms, p.ms > 0.0 ? r.ms_per_step / p.ms : 0.0, r.steps_per_second, p.sps);
+        else
+            printf("- | - | %.1f | - | ", r.steps_per_second);
+        if (r.stands) {
+            printf("%.5f (dx %+.4f dy %+.4f, %+.2f deg) | ", r.top_disp, r.dx, r.dy, r.angle_deg);
+            if (p.ok && p.has_disp)
+                printf("%.5f (dx %+.4f dy %+.4f, %+.2f deg) |\n", p.disp, p.dx, p.dy, p.angle);
+            else
+                printf("- |\n");
+        } else {
+            printf("- | - |\n");
+        }
+        fflush(stdout);
+    }
+    return 0;
+}
+
+/* ---- main ----------------------------------------------------------------------------- */
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--json]\n"
+            "       pogon-bench all | effects [SCENE] | memory | compare   [options]\n"
+            "scenes: pyramid (count = rows, default 20), stack (boxes, default 20), rain (circles, default 1000)\n"
+            "steps default to 600 (pyramid, stack) and 300 (rain); repeat defaults to 3 (median reported)\n");
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    const char *words[2] = {NULL, NULL};
+    int nwords = 0, i;
+    memset(&o, 0, sizeof o);
+    for (i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        if (strcmp(a, "--json") == 0) {
+            o.json = 1;
+        } else if (strcmp(a, "--count") == 0 || strcmp(a, "--steps") == 0 || strcmp(a, "--repeat") == 0) {
+            uint32_t v;
+            if (i + 1 >= argc || !parse_u32(argv[i + 1], &v) || v == 0) {
+                fprintf(stderr, "pogon-bench: %s needs a positive integer\n", a);
+                return 2;
+            }
+            if (a[2] == 'c') o.count = v;
+            else if (a[2] == 's') o.steps = v;
+            else o.repeat = v > MAX_REPEAT ? MAX_REPEAT : v;
+            ++i;
+        } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage(stdout);
+            return 0;
+        } else if (a[0] == '-') {
+            fprintf(stderr, "pogon-bench: unknown option %s\n", a);
+            usage(stderr);
+            return 2;
+        } else if (nwords < 2) {
+            words[nwords++] = a;
+        } else {
+            fprintf(stderr, "pogon-bench: unexpected argument %s\n", a);
+            return 2;
+        }
+    }
+    if (nwords == 0) {
+        usage(stderr);
+        return 2;
+    }
+    if (is_scene(words[0]) && nwords == 1) return mode_scene(words[0], &o);
+    if (strcmp(words[0], "all") == 0 && nwords == 1) return mode_all(&o);
+    if (strcmp(words[0], "memory") == 0 && nwords == 1) return mode_memory(&o);
+    if (strcmp(words[0], "compare") == 0 && nwords == 1) return mode_compare(argv[0], &o);
+    if (strcmp(words[0], "effects") == 0) {
+        if (nwords == 2 && !is_scene(words[1])) {
+            fprintf(stderr, "pogon-bench: unknown scene %s\n", words[1]);
+            return 2;
+        }
+        return mode_effects(nwords == 2 ? words[1] : NULL, &o);
+    }
+    fprintf(stderr, "pogon-bench: unknown scene or mode %s\n", words[0]);
+    usage(stderr);
+    return 2;
+}
