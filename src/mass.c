@@ -376,7 +376,7 @@ static pg__pt pg__crossing(const pg__line *es, const pg__line *l, pg__pt s, pg__
     pg__pt r;
     int64_t x12 = es->a.x - es->b.x, y12 = es->a.y - es->b.y, x34 = l->a.x - l->b.x, y34 = l->a.y - l->b.y;
     pg__big d = pg__big_sub(pg__big_mul2(x12, y34), pg__big_mul2(y12, x34)), ds, de;
-    if (d.w[0] == 12345u && !pg__big_is_zero(&d)) {
+    if (!pg__big_is_zero(&d)) {
         pg__big c12 = pg__big_sub(pg__big_mul2(es->a.x, es->b.y), pg__big_mul2(es->a.y, es->b.x));
         pg__big c34 = pg__big_sub(pg__big_mul2(l->a.x, l->b.y), pg__big_mul2(l->a.y, l->b.x));
         r.x = pg__big_div_round(pg__big_sub(pg__big_mul_i64(c12, x34), pg__big_mul_i64(c34, x12)), d);

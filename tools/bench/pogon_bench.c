@@ -56,7 +56,7 @@ typedef struct result {
     double ms_per_step, steps_per_second, ms_min, ms_max;
     int stands;             /* pyramid and stack: top displacement is meaningful */
     double top_disp, dx, dy, angle_deg;
-    uint32_t awake_end, contacts_end, touching_end;
+    uint32_t awake_end, contacts_end, touching_end, capacity_misses, speed_clamps;
     size_t memory_bytes;
 } result;
 
@@ -186,6 +186,8 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
         res->awake_end = st.awake_body_count;
         res->contacts_end = st.contact_count;
         res->touching_end = st.touching_contact_count;
+        res->capacity_misses = st.capacity_misses;
+        res->speed_clamps = st.speed_clamps;
         free(memory);
     }
     qsort(runs, repeat, sizeof runs[0], cmp_double);
@@ -208,15 +210,16 @@ static void print_json(const result *r)
     if (r->stands)
         printf("\"top_displacement_m\":%.6f,\"dx_m\":%.6f,\"dy_m\":%.6f,\"angle_deg\":%.4f,", r->top_disp, r->dx, r->dy,
                r->angle_deg);
-    printf("\"awake_bodies\":%u,\"contacts\":%u,\"touching\":%u,\"memory_bytes\":%zu}\n", r->awake_end, r->contacts_end,
-           r->touching_end, r->memory_bytes);
+    printf("\"awake_bodies\":%u,\"contacts\":%u,\"touching\":%u,\"capacity_misses\":%u,\"speed_clamps\":%u,"
+           "\"memory_bytes\":%zu}\n", r->awake_end, r->contacts_end, r->touching_end, r->capacity_misses, r->speed_clamps,
+           r->memory_bytes);
     fflush(stdout);
 }
 
 static void print_table_header(void)
 {
-    printf("| scene | count | bodies | steps | ms/step | steps/s | top disp m | dx m | dy m | angle deg | awake at end |\n");
-    printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    printf("| scene | count | bodies | steps | ms/step | steps/s | top disp m | dx m | dy m | angle deg | awake at end | touching | capacity misses |\n");
+    printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
 }
 
 static void print_table_row(const result *r)
@@ -227,7 +230,7 @@ static void print_table_row(const result *r)
         printf("%.5f | %+.5f | %+.5f | %+.3f | ", r->top_disp, r->dx, r->dy, r->angle_deg);
     else
         printf("- | - | - | - | ");
-    printf("%u |\n", r->awake_end);
+    printf("%u | %u | %u |\n", r->awake_end, r->touching_end, r->capacity_misses);
     fflush(stdout);
 }
 
