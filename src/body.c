@@ -32,13 +32,26 @@ static int in_position_envelope(pg_vec2 p)
     return p.x >= -PG_ENV_MAX_POSITION && p.x <= PG_ENV_MAX_POSITION && p.y >= -PG_ENV_MAX_POSITION && p.y <= PG_ENV_MAX_POSITION;
 }
 
+static int64_t speed_squared(pg_vec2 v) { return (int64_t)v.x * v.x + (int64_t)v.y * v.y; }
+
 static pg_result check_speed(const pg_world *world, pg_vec2 v)
 {
-    pg_fix cap = world->def.max_linear_speed;
-    if (v.x < -cap || v.x > cap || v.y < -cap || v.y > cap)
-        return pg__fail_value(world, PG_ERR_ENVELOPE, "velocity component", v.x < -cap || v.x > cap ? v.x : v.y,
-                              "m/s exceeds the world's max_linear_speed");
+    int64_t cap = world->def.max_linear_speed;
+    if (speed_squared(v) > cap * cap)
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "linear velocity: speed", pg_v2_length(v), "m/s exceeds the world's max_linear_speed");
     return PG_OK;
+}
+
+/* The speed cap acts on the magnitude: a faster velocity is scaled down to the cap,
+ * keeping its direction, and the event is counted in stats.speed_clamps. */
+pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v)
+{
+    int64_t cap = world->def.max_linear_speed, len;
+    if (speed_squared(v) <= cap * cap) return v;
+    world->stats.speed_clamps += 1u;
+    len = pg_v2_length(v);
+    if (len <= 0) return v;
+    return pg_v2(pg_fix_from_ratio((int64_t)v.x * cap, len << 16), pg_fix_from_ratio((int64_t)v.y * cap, len << 16));
 }
 
 static pg_result check_body_def(const pg_world *world, const pg_body_def *d)
@@ -457,16 +470,6 @@ pg_result pg_body_apply_torque(pg_world *world, pg_body_id id, pg_fix torque)
     return PG_OK;
 }
 
-static pg_fix clamp_speed(pg_world *world, int64_t v)
-{
-    int64_t cap = world->def.max_linear_speed;
-    if (v > cap || v < -cap) {
-        world->stats.speed_clamps += 1u;
-        return (pg_fix)(v > cap ? cap : -cap);
-    }
-    return (pg_fix)v;
-}
-
 pg_result pg_body_apply_linear_impulse(pg_world *world, pg_body_id id, pg_vec2 impulse, pg_vec2 point)
 {
     pg_body *b = NULL;
@@ -474,8 +477,8 @@ pg_result pg_body_apply_linear_impulse(pg_world *world, pg_body_id id, pg_vec2 i
     int64_t rx, ry, ang;
     if (r != PG_OK) return r;
     if (!in_position_envelope(point)) return pg__fail(world, PG_ERR_ENVELOPE, "point is outside +-1000 m");
-    b->v.x = clamp_speed(world, (int64_t)b->v.x + pg__mul64_shr(impulse.x, b->inv_mass, 38));
-    b->v.y = clamp_speed(world, (int64_t)b->v.y + pg__mul64_shr(impulse.y, b->inv_mass, 38));
+    b->v = pg__clamp_speed(world, pg_v2(pg__sat64((int64_t)b->v.x + pg__mul64_shr(impulse.x, b->inv_mass, 38)),
+                                        pg__sat64((int64_t)b->v.y + pg__mul64_shr(impulse.y, b->inv_mass, 38))));
     rx = (int64_t)point.x - b->center.x;
     ry = (int64_t)point.y - b->center.y;
     ang = pg__round_shift64(rx * impulse.y - ry * impulse.x, 16);

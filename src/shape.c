@@ -312,6 +312,13 @@ static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_de
     out->generation = 0;
     if (w->body_count >= w->def.max_bodies) return pg__fail(w, PG_ERR_CAPACITY, "max_bodies reached");
     if (w->shape_count + (uint32_t)n > w->def.max_shapes) return pg__fail(w, PG_ERR_CAPACITY, "max_shapes reached");
+    { /* validate everything first: a failing call must leave the pools untouched */
+        pg_body probe;
+        probe.type = bd->type;
+        r = check_shape_def(w, &probe, sd);
+        for (i = 0; r == PG_OK && i < n; ++i) r = check_geometry(w, &g[i]);
+        if (r != PG_OK) return r;
+    }
     r = pg_body_create(w, bd, &id);
     if (r != PG_OK) return r;
     for (i = 0; i < n; ++i) {

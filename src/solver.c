@@ -33,8 +33,8 @@ typedef struct solver_body {
     pg_vec2 c0, c;        /* centre at the start of the step, and now */
     pg_angle a0, a;
     pg_rot dq;            /* rotation from a0 to a */
-    pg_vec2 dv;           /* velocity change per substep from gravity and force */
-    pg_fix dw;            /* angular velocity change per substep from torque */
+    pg_vec2 accel;        /* from gravity and force, m/s^2 */
+    pg_fix alpha;         /* from torque, rad/s^2 */
     int32_t lin_damp, ang_damp; /* Q2.30 factor per substep; PG_ROT_ONE: none */
 } solver_body;
 
@@ -280,16 +280,6 @@ static void restitution(const step_context *ctx, constraint *c, solver_body *bod
     }
 }
 
-static pg_fix clamp_speed(pg_world *w, pg_fix v)
-{
-    pg_fix cap = w->def.max_linear_speed;
-    if (v > cap || v < -cap) {
-        w->stats.speed_clamps += 1u;
-        return v > cap ? cap : -cap;
-    }
-    return v;
-}
-
 void pg__solve(pg_world *w)
 {
     unsigned char *scratch = (unsigned char *)w->solver_scratch;
@@ -335,8 +325,8 @@ void pg__solve(pg_world *w)
         sb->c0 = sb->c = b->center;
         sb->a0 = sb->a = b->angle;
         sb->dq = pg_rot_identity();
-        sb->dv = pg_v2_zero();
-        sb->dw = 0;
+        sb->accel = pg_v2_zero();
+        sb->alpha = 0;
         sb->lin_damp = PG_ROT_ONE;
         sb->ang_damp = PG_ROT_ONE;
         if (b->type != PG_BODY_DYNAMIC) continue;
@@ -351,9 +341,8 @@ void pg__solve(pg_world *w)
                 ay += pg__mul64_shr(b->force_y, b->inv_mass, 38);
             }
             if (rotation && b->torque != 0) alpha = pg__mul64_shr(b->torque, b->inv_inertia, 38);
-            sb->dv.x = pg__sat64(pg__round_shift64(pg__sat64(ax) * ctx.h_q32, 32));
-            sb->dv.y = pg__sat64(pg__round_shift64(pg__sat64(ay) * ctx.h_q32, 32));
-            sb->dw = pg__sat64(pg__round_shift64(pg__sat64(alpha) * ctx.h_q32, 32));
+            sb->accel = pg_v2(pg__sat64(ax), pg__sat64(ay));
+            sb->alpha = pg__sat64(alpha);
         }
         if ((effects & PG_EFFECT_DAMPING) != 0) {
             /* v *= 1 / (1 + h c) per substep */
@@ -412,17 +401,24 @@ void pg__solve(pg_world *w)
 
     for (sub = 0; sub < w->def.substeps; ++sub) {
         int order = (int)(sub & 1u);
-        /* integrate velocities */
+        /* integrate velocities. The velocity change of substep k is
+         * round(a t_(k+1)) - round(a t_k), t_k = k h: the rounding errors do not add up
+         * over the substeps, a step changes velocity by round(a dt) exactly. */
+        int64_t t0 = ctx.h_q32 * (int64_t)sub, t1 = ctx.h_q32 * (int64_t)(sub + 1u); /* <= 2^32 / step_hz */
         for (i = 0; i < n_active; ++i) {
             solver_body *sb = &bodies[active[i]];
-            sb->v.x = clamp_speed(w, pg_fix_add(sb->v.x, sb->dv.x));
-            sb->v.y = clamp_speed(w, pg_fix_add(sb->v.y, sb->dv.y));
+            if (sb->accel.x != 0 || sb->accel.y != 0) {
+                int64_t vx = (int64_t)sb->v.x + pg__round_shift64(sb->accel.x * t1, 32) - pg__round_shift64(sb->accel.x * t0, 32);
+                int64_t vy = (int64_t)sb->v.y + pg__round_shift64(sb->accel.y * t1, 32) - pg__round_shift64(sb->accel.y * t0, 32);
+                sb->v = pg__clamp_speed(w, pg_v2(pg__sat64(vx), pg__sat64(vy)));
+            }
             if (sb->lin_damp != PG_ROT_ONE) {
                 sb->v.x = pg__mul_q30(sb->v.x, sb->lin_damp);
                 sb->v.y = pg__mul_q30(sb->v.y, sb->lin_damp);
             }
             if (rotation) {
-                sb->w = pg_fix_add(sb->w, sb->dw);
+                if (sb->alpha != 0)
+                    sb->w = pg__sat64((int64_t)sb->w + pg__round_shift64(sb->alpha * t1, 32) - pg__round_shift64(sb->alpha * t0, 32));
                 if (sb->ang_damp != PG_ROT_ONE) sb->w = pg__mul_q30(sb->w, sb->ang_damp);
             }
         }
@@ -460,7 +456,7 @@ void pg__solve(pg_world *w)
         pg_body *b = &w->bodies[active[i]];
         const solver_body *sb = &bodies[active[i]];
         b->v = sb->v;
-        b->w = sb->w;
+        if (rotation) b->w = sb->w; /* rotation off pauses spin; it does not erase it */
         b->center = sb->c;
         if (b->angle != sb->a) {
             b->angle = sb->a;

@@ -132,6 +132,7 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index);
 void pg__body_sync_geometry(pg_world *world, uint32_t body_index); /* world geoms + boxes */
 void pg__wake_body(pg_world *world, uint32_t body_index);         /* and its island */
 int pg__body_is_active(const pg_body *b); /* awake and movable: takes part in the solver */
+pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v);                /* the documented speed cap */
 
 /* contact.c */
 pg_result pg__update_contacts(pg_world *world);

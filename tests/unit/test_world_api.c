@@ -328,10 +328,10 @@ static void test_failed_make_leaves_pool_unchanged(void **state)
     assert_int_equal(shape_count(t1.w), 0);
     assert_int_equal(pg_make_box(t1.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &h1), PG_OK);
     assert_int_equal(pg_make_box(t2.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &h2), PG_OK);
-    PG_EXPECT_EQ(h1.index, h2.index, "%s", "slot after a failed pg_make_box");
-    PG_EXPECT_EQ(h1.generation, h2.generation, "%s", "generation after a failed pg_make_box (a failing call must leave the pool unchanged)");
     free_world(&t1);
     free_world(&t2);
+    PG_EXPECT_EQ(h1.index, h2.index, "%s", "slot after a failed pg_make_box");
+    PG_EXPECT_EQ(h1.generation, h2.generation, "%s", "generation after a failed pg_make_box (a failing call must leave the pool unchanged)");
 }
 
 /* ---- handles ------------------------------------------------------------------------------------- */
@@ -514,6 +514,45 @@ static void test_envelope(void **state)
     s2 = sd; s2.density = 0;
     assert_int_equal(pg_make_wall(w, &b2, &s2, PG_FIX_C(10), PG_FIX_ONE, &id), PG_OK);
     free_world(&t);
+}
+
+/* "speeds up to max_linear_speed": a speed is the length of the velocity, so a velocity
+ * of (300, 300) m/s (speed 424 m/s) is outside the default 400 m/s envelope even though
+ * each component is below it. */
+static void test_envelope_speed_is_magnitude(void **state)
+{
+    test_world t = make_world(8, 8, 16);
+    pg_world *w = t.w;
+    pg_body_def bd = dynamic_at(0, 0);
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id id, ok;
+    pg_fix cap = pg_world_get_def(w).max_linear_speed;
+    pg_fix comp = fx(fd(cap) * 0.75); /* |(c, c)| = 1.06 cap */
+    (void)state;
+    pg_result r1, r2;
+    char e1[200], e2[200];
+    uint32_t n;
+    pg_vec2 v;
+    assert_int_equal(pg_make_ball(w, &bd, &sd, PG_FIX_ONE, &ok), PG_OK);
+    bd.position = pg_v2(PG_FIX_C(10), 0);
+    bd.linear_velocity = pg_v2(comp, comp);
+    r1 = pg_make_ball(w, &bd, &sd, PG_FIX_ONE, &id);
+    snprintf(e1, sizeof e1, "%s", pg_world_last_error(w));
+    r2 = pg_body_set_linear_velocity(w, ok, pg_v2(comp, -comp));
+    snprintf(e2, sizeof e2, "%s", pg_world_last_error(w));
+    n = body_count(w);
+    v = pg_body_linear_velocity(w, ok);
+    free_world(&t); /* before any assertion, so a failure leaks nothing */
+    if (r1 != PG_ERR_ENVELOPE || r2 != PG_ERR_ENVELOPE) {
+        print_error("velocity (%g, %g) m/s, speed %g m/s > max_linear_speed %g: pg_make_ball gave %s (\"%s\"), "
+                    "pg_body_set_linear_velocity gave %s (\"%s\"); want PG_ERR_ENVELOPE\n",
+                    fd(comp), fd(comp), fd(comp) * sqrt(2.0), fd(cap), pg_result_name(r1), e1, pg_result_name(r2), e2);
+        fail();
+    }
+    assert_non_null(strstr(e1, "velocity"));
+    assert_non_null(strstr(e2, "velocity"));
+    assert_int_equal(n, 1);
+    assert_true(pg_v2_equal(v, pg_v2_zero()));
 }
 
 /* ---- geometry ----------------------------------------------------------------------------------- */
@@ -1040,6 +1079,7 @@ int main(void)
         cmocka_unit_test(test_failed_make_leaves_pool_unchanged),
         cmocka_unit_test(test_stale_handles),
         cmocka_unit_test(test_envelope),
+        cmocka_unit_test(test_envelope_speed_is_magnitude),
         cmocka_unit_test(test_degenerate_and_convexity),
         cmocka_unit_test(test_shape_create_validates_geometry),
         cmocka_unit_test(test_forces_need_dynamic_body),

@@ -1,6 +1,6 @@
 // pogon-bench-box2d — the pogon-bench scenes in Box2D 2.4.1, for comparison.
 //
-// Usage: pogon-bench-box2d SCENE [--count N] [--steps N] [--repeat R] [--json]
+// Usage: pogon-bench-box2d SCENE [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]
 //        pogon-bench-box2d all [options]
 //
 // Same scenes as tools/scenes/scenes.c: a static ground 100 x 2 m whose top is at y = 0,
@@ -9,7 +9,8 @@
 // in 100 m pieces at x = +-20.25 up to 500 m, and `count` circles whose radii (0.25 ..
 // 0.5 m) and positions come from the same xorshift32 sequence (seed 12345) in the same
 // order, converted from the same Q16.16 integers. Box2D settings: gravity (0, -10),
-// timestep 1/60, 8 velocity and 3 position iterations (its defaults), sleeping on.
+// timestep 1/60, 8 velocity and 3 position iterations (its defaults), sleeping on
+// (--no-sleep: SetAllowSleeping(false)).
 //
 // Method (as pogon-bench): build `repeat` times (default 3), time `steps` steps (default
 // 600 for pyramid/stack, 300 for rain) with clock_gettime(CLOCK_MONOTONIC) around the
@@ -33,6 +34,7 @@ namespace {
 struct Options {
     uint32_t count = 0, steps = 0, repeat = 3;
     bool json = false;
+    bool no_sleep = false;
 };
 
 struct Result {
@@ -42,6 +44,7 @@ struct Result {
     bool stands = false;
     double disp = 0, dx = 0, dy = 0, angle_deg = 0;
     uint32_t awake = 0, contacts = 0, touching = 0;
+    bool sleeping = true;
 };
 
 double now_ms()
@@ -146,8 +149,10 @@ bool run(const std::string &scene, const Options &o, uint32_t count_override, Re
     res->steps = steps;
     res->repeat = repeat;
     res->stands = !rain;
+    res->sleeping = !o.no_sleep;
     for (uint32_t r = 0; r < repeat; ++r) {
         b2World *w = new b2World(b2Vec2(0.0f, -10.0f));
+        w->SetAllowSleeping(!o.no_sleep);
         b2Body *top = build(w, scene, count, &res->bodies);
         if (top == nullptr) {
             delete w;
@@ -184,8 +189,9 @@ bool run(const std::string &scene, const Options &o, uint32_t count_override, Re
 void print_json(const Result &r)
 {
     std::printf("{\"engine\":\"box2d-2.4.1\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":0,"
-                "\"repeat\":%u,\"ms_per_step\":%.6f,\"ms_min\":%.6f,\"ms_max\":%.6f,\"steps_per_second\":%.2f,",
-                r.scene.c_str(), r.count, r.bodies, r.steps, r.repeat, r.ms, r.ms_min, r.ms_max, r.sps);
+                "\"repeat\":%u,\"sleeping\":%s,\"ms_per_step\":%.6f,\"ms_min\":%.6f,\"ms_max\":%.6f,\"steps_per_second\":%.2f,",
+                r.scene.c_str(), r.count, r.bodies, r.steps, r.repeat, r.sleeping ? "true" : "false", r.ms, r.ms_min,
+                r.ms_max, r.sps);
     if (r.stands)
         std::printf("\"top_displacement_m\":%.6f,\"dx_m\":%.6f,\"dy_m\":%.6f,\"angle_deg\":%.4f,", r.disp, r.dx, r.dy,
                     r.angle_deg);
@@ -231,6 +237,8 @@ int main(int argc, char **argv)
         std::string a = argv[i];
         if (a == "--json") {
             o.json = true;
+        } else if (a == "--no-sleep") {
+            o.no_sleep = true;
         } else if (a == "--count" || a == "--steps" || a == "--repeat") {
             uint32_t v;
             if (i + 1 >= argc || !parse_u32(argv[i + 1], &v)) {
@@ -242,7 +250,7 @@ int main(int argc, char **argv)
         } else if (a[0] != '-' && mode.empty()) {
             mode = a;
         } else {
-            std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json]\n");
+            std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n");
             return 2;
         }
     }
@@ -252,7 +260,7 @@ int main(int argc, char **argv)
     } else if (mode == "all") {
         todo = {{"pyramid", 20u}, {"stack", 20u}, {"rain", 1000u}, {"rain", 2000u}, {"rain", 4000u}, {"rain", 8000u}, {"rain", 16000u}};
     } else {
-        std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json]\n");
+        std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n");
         return 2;
     }
     if (!o.json) print_header();

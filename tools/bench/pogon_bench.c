@@ -1,7 +1,7 @@
 /* pogon-bench — how long does a step of a whole world take?
  *
  * Usage:
- *   pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--json]
+ *   pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]
  *       SCENE is pyramid (count = rows, default 20: 210 boxes), stack (count = boxes,
  *       default 20) or rain (count = circles, default 1000).
  *   pogon-bench all       pyramid, stack, rain at 1000, 2000, 4000, 8000, 16000, then the
@@ -13,7 +13,8 @@
  *   pogon-bench memory    bytes pg_world_memory_size asks for, per scene.
  *   pogon-bench compare   pogon next to Box2D 2.4.1 (the pogon-bench-box2d harness, run
  *                         as a subprocess when it was built next to this program) for
- *                         pyramid and rain 1000.
+ *                         pyramid and rain 1000, with sleeping on and with it off.
+ *   --no-sleep            PG_EFFECT_SLEEPING off (in Box2D: SetAllowSleeping(false)).
  *
  * Method: a run builds the scene (the shared tools/scenes code, memory from malloc),
  * takes `warmup` untimed steps (0 unless stated), then times `steps` steps with
@@ -47,6 +48,7 @@ typedef struct options {
     uint32_t steps;   /* 0: the scene's default */
     uint32_t repeat;
     int json;
+    int no_sleep;     /* --no-sleep: PG_EFFECT_SLEEPING off */
 } options;
 
 typedef struct result {
@@ -202,8 +204,8 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
 static void print_json(const result *r)
 {
     printf("{\"engine\":\"pogon\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":%u,\"repeat\":%u,"
-           "\"effects\":%u,",
-           r->scene, r->count, r->bodies, r->steps, r->warmup, r->repeat, r->effects);
+           "\"effects\":%u,\"trig_table_bits\":%d,",
+           r->scene, r->count, r->bodies, r->steps, r->warmup, r->repeat, r->effects, PG_TRIG_TABLE_BITS);
     if (r->label != NULL) printf("\"variant\":\"%s\",", r->label);
     printf("\"ms_per_step\":%.6f,\"ms_min\":%.6f,\"ms_max\":%.6f,\"steps_per_second\":%.2f,", r->ms_per_step, r->ms_min,
            r->ms_max, r->steps_per_second);
@@ -235,10 +237,15 @@ static void print_table_row(const result *r)
 }
 
 /* ---- modes ------------------------------------------------------------------------------ */
+static uint32_t base_effects(const options *o)
+{
+    return o->no_sleep ? PG_EFFECTS_ALL & ~PG_EFFECT_SLEEPING : PG_EFFECTS_ALL;
+}
+
 static int mode_scene(const char *scene, const options *o)
 {
     result r;
-    if (run_bench(scene, o->count, o->steps, 0, o->repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+    if (run_bench(scene, o->count, o->steps, 0, o->repeat, base_effects(o), &r) != 0) return 1;
     if (o->json) {
         print_json(&r);
     } else {
@@ -257,12 +264,12 @@ static int mode_all(const options *o)
     size_t i;
     double sx = 0, sy = 0, sxx = 0, sxy = 0, k;
     if (!o->json) print_table_header();
-    if (run_bench("pyramid", 0, o->steps, 0, o->repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+    if (run_bench("pyramid", 0, o->steps, 0, o->repeat, base_effects(o), &r) != 0) return 1;
     if (o->json) print_json(&r); else print_table_row(&r);
-    if (run_bench("stack", 0, o->steps, 0, o->repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+    if (run_bench("stack", 0, o->steps, 0, o->repeat, base_effects(o), &r) != 0) return 1;
     if (o->json) print_json(&r); else print_table_row(&r);
     for (i = 0; i < RAIN_N; ++i) {
-        if (run_bench("rain", rain_counts[i], o->steps, 0, o->repeat, PG_EFFECTS_ALL, &rain[i]) != 0) return 1;
+        if (run_bench("rain", rain_counts[i], o->steps, 0, o->repeat, base_effects(o), &rain[i]) != 0) return 1;
         if (o->json) print_json(&rain[i]); else print_table_row(&rain[i]);
     }
     for (i = 0; i < RAIN_N; ++i) {
@@ -417,13 +424,14 @@ static int json_number(const char *line, const char *key, double *out)
 
 typedef struct peer_result { int ok; double ms, sps, disp, dx, dy, angle; int has_disp; } peer_result;
 
-static peer_result run_peer(const char *exe, const char *scene, uint32_t count, uint32_t steps, uint32_t repeat)
+static peer_result run_peer(const char *exe, const char *scene, uint32_t count, uint32_t steps, uint32_t repeat, int no_sleep)
 {
     char cmd[4600], line[2048];
     peer_result pr;
     FILE *f;
     memset(&pr, 0, sizeof pr);
-    snprintf(cmd, sizeof cmd, "'%s' %s --count %u --steps %u --repeat %u --json", exe, scene, count, steps, repeat);
+    snprintf(cmd, sizeof cmd, "'%s' %s --count %u --steps %u --repeat %u --json%s", exe, scene, count, steps, repeat,
+             no_sleep ? " --no-sleep" : "");
     f = popen(cmd, "r");
     if (f == NULL) return pr;
     while (fgets(line, sizeof line, f) != NULL) {
@@ -442,7 +450,10 @@ static peer_result run_peer(const char *exe, const char *scene, uint32_t count, 
 
 static int mode_compare(const char *argv0, const options *o)
 {
-    static const struct { const char *scene; uint32_t count; } list[] = {{"pyramid", 20u}, {"rain", 1000u}};
+    /* pogon's pyramid falls asleep within its first second, so a row with sleeping off in
+     * both engines measures the solver on the whole scene */
+    static const struct { const char *scene; uint32_t count; int no_sleep; } list[] = {
+        {"pyramid", 20u, 0}, {"pyramid", 20u, 1}, {"rain", 1000u, 0}, {"rain", 1000u, 1}};
     char dir[4096], exe[4200];
     int have_peer;
     size_t i;
@@ -460,21 +471,25 @@ static int mode_compare(const char *argv0, const options *o)
         result r;
         peer_result p;
         uint32_t repeat = o->repeat ? o->repeat : DEFAULT_REPEAT;
-        if (run_bench(list[i].scene, list[i].count, o->steps, 0, repeat, PG_EFFECTS_ALL, &r) != 0) return 1;
+        int no_sleep = list[i].no_sleep || o->no_sleep;
+        if (run_bench(list[i].scene, list[i].count, o->steps, 0, repeat,
+                      no_sleep ? PG_EFFECTS_ALL & ~PG_EFFECT_SLEEPING : PG_EFFECTS_ALL, &r) != 0) return 1;
+        if (no_sleep) r.label = "sleeping off";
         memset(&p, 0, sizeof p);
         if (have_peer) {
-            p = run_peer(exe, list[i].scene, list[i].count, r.steps, repeat);
+            p = run_peer(exe, list[i].scene, list[i].count, r.steps, repeat, no_sleep);
             if (!p.ok) fprintf(stderr, "pogon-bench: %s %s gave no result\n", exe, list[i].scene);
         }
         if (o->json) {
             print_json(&r);
             if (p.ok)
-                printf("{\"compare\":\"%s\",\"count\":%u,\"steps\":%u,\"pogon_ms_per_step\":%.6f,\"box2d_ms_per_step\":%.6f,"
-                       "\"ratio\":%.4f}\n", r.scene, r.count, r.steps, r.ms_per_step, p.ms,
+                printf("{\"compare\":\"%s\",\"count\":%u,\"steps\":%u,\"sleeping\":%s,\"pogon_ms_per_step\":%.6f,"
+                       "\"box2d_ms_per_step\":%.6f,\"ratio\":%.4f}\n", r.scene, r.count, r.steps, no_sleep ? "false" : "true",
+                       r.ms_per_step, p.ms,
                        p.ms > 0.0 ? r.ms_per_step / p.ms : 0.0);
             continue;
         }
-        printf("| %s | %u | %u | %.4f | ", r.scene, r.count, r.steps, r.ms_per_step);
+        printf("| %s%s | %u | %u | %.4f | ", r.scene, no_sleep ? " (sleeping off)" : "", r.count, r.steps, r.ms_per_step);
         if (p.ok)
             printf("%.4f | %.2f | %.1f | %.1f | ", p.ms, p.ms > 0.0 ? r.ms_per_step / p.ms : 0.0, r.steps_per_second, p.sps);
         else
@@ -497,7 +512,7 @@ static int mode_compare(const char *argv0, const options *o)
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--json]\n"
+            "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n"
             "       pogon-bench all | effects [SCENE] | memory | compare   [options]\n"
             "scenes: pyramid (count = rows, default 20), stack (boxes, default 20), rain (circles, default 1000)\n"
             "steps default to 600 (pyramid, stack) and 300 (rain); repeat defaults to 3 (median reported)\n");
@@ -513,6 +528,8 @@ int main(int argc, char **argv)
         const char *a = argv[i];
         if (strcmp(a, "--json") == 0) {
             o.json = 1;
+        } else if (strcmp(a, "--no-sleep") == 0) {
+            o.no_sleep = 1;
         } else if (strcmp(a, "--count") == 0 || strcmp(a, "--steps") == 0 || strcmp(a, "--repeat") == 0) {
             uint32_t v;
             if (i + 1 >= argc || !parse_u32(argv[i + 1], &v) || v == 0) {
