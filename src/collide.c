@@ -9,7 +9,9 @@
  *   polygon - polygon    (anything with count >= 2) separating axes over the face normals
  *                        of both cores. The reference face is A's best face unless B's is
  *                        better by more than PG__REF_TOLERANCE (0.1 linear slop), so
- *                        stacked boxes keep one reference. The incident edge is the other
+ *                        stacked boxes keep one reference; cores apart by more than that
+ *                        take the better face outright (it measures the distance). The
+ *                        incident edge is the other
  *                        shape's edge most anti-parallel to the reference normal. When the
  *                        cores are apart (rounded shapes, speculative contacts) the closest
  *                        features of the two edges decide: two vertices give one point with
@@ -260,7 +262,7 @@ static int pg__segments_cross(pg_vec2 a1, pg_vec2 a2, pg_vec2 b1, pg_vec2 b2)
 static void pg__collide_polygons(const pg_geom *a, const pg_geom *b, pg_fix speculative, pg_manifold *out)
 {
     const pg_geom *ref, *inc;
-    int32_t ea, eb, i11, i12, i21, i22, j, flip, apart;
+    int32_t ea, eb, i11, i12, i21, i22, j, flip, far, apart;
     int64_t sa = pg__max_separation(a, b, &ea), sb = pg__max_separation(b, a, &eb);
     int64_t radius = (int64_t)a->radius + b->radius, rdiff;
     int64_t limit2 = ((int64_t)speculative + radius) * ((int64_t)1 << 31);
@@ -271,7 +273,17 @@ static void pg__collide_polygons(const pg_geom *a, const pg_geom *b, pg_fix spec
 
     if (sa > limit2 || sb > limit2) return;
 
-    flip = sb > sa + PG__REF_TOLERANCE * ((int64_t)1 << 31);
+    /* Cores apart by more than the tolerance: the reference is the face with the larger
+     * separation (A on ties), without hysteresis. The closest points of two separated
+     * convex cores span a slab that separates them, so when they are a vertex and a
+     * face's interior that face's separation is the distance and no other face's is
+     * larger: the best face measures the distance. A face kept by the hysteresis may
+     * instead see the incident edge clipped at its side plane farther away than the
+     * closest points really are (a vertex of A against the interior of a face of B that
+     * is tilted against A's face), overstating the gap. Touching or overlapping cores
+     * (resting contact) keep A's face unless B's is better by PG__REF_TOLERANCE. */
+    far = (sa > sb ? sa : sb) > PG__REF_TOLERANCE * ((int64_t)1 << 31);
+    flip = far ? sb > sa : sb > sa + PG__REF_TOLERANCE * ((int64_t)1 << 31);
     ref = flip ? b : a;
     inc = flip ? a : b;
     i11 = flip ? eb : ea;
@@ -301,7 +313,7 @@ static void pg__collide_polygons(const pg_geom *a, const pg_geom *b, pg_fix spec
     /* Cores apart by more than the tolerance: do two vertices hold the closest points?
      * Two segments can also be apart with no face axis showing it (end to end on one
      * line): unless they cross, look at their closest features too. */
-    apart = (sa > sb ? sa : sb) > PG__REF_TOLERANCE * ((int64_t)1 << 31);
+    apart = far;
     if (!apart && a->count == 2 && b->count == 2) apart = !pg__segments_cross(v11, v12, v21, v22);
     if (apart) {
         pg_dir n2 = inc->normals[j];

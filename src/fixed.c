@@ -81,15 +81,18 @@ pg_fix_status pg_fix_mul_checked(pg_fix a, pg_fix b, pg_fix *out)
 
 uint32_t pg_isqrt64(uint64_t v)
 {
-    uint64_t res = 0, one = (uint64_t)1 << 62;
-    while (one > v) one >>= 2;
+    /* Digit-by-digit square root, branch-free in its loop (a data-dependent branch
+     * mispredicts half the time), starting at the highest bit pair of v. */
+    uint64_t res = 0, one = (uint64_t)1 << 62, t = v;
+    int shift = 62;
+    while (shift >= 8 && (t >> (shift - 6)) == 0) shift -= 8; /* t < 2^(shift - 6): skip a byte */
+    while (shift > 0 && (t >> shift) == 0) shift -= 2;
+    one = (uint64_t)1 << shift;
     while (one != 0) {
-        if (v >= res + one) {
-            v -= res + one;
-            res = (res >> 1) + one;
-        } else {
-            res >>= 1;
-        }
+        uint64_t b = res + one;
+        uint64_t ge = (uint64_t)0 - (uint64_t)(v >= b); /* all ones when v >= b */
+        v -= b & ge;
+        res = (res >> 1) + (one & ge);
         one >>= 2;
     }
     return (uint32_t)res;

@@ -64,12 +64,8 @@ pg_dir pg_dir_normalize(int64_t x, int64_t y)
 void pg_geom_transform(const pg_geom *local, pg_vec2 position, pg_rot rotation, pg_geom *world)
 {
     int32_t i, count = local->count;
-    /* The rotation from the trig table is unit only to about 5e-6; normalise it so
-     * that placed shapes keep their size and their normals stay unit. */
-    pg_dir r = pg_dir_normalize(rotation.c, rotation.s);
-    rotation.c = r.x;
-    rotation.s = r.y;
-    if (r.x == 0 && r.y == 0) rotation = pg_rot_identity();
+    /* pg_rot_from_angle returns unit rotations (to 1.25 Q30 units), so placed shapes
+     * keep their size and their normals stay unit without normalising here. */
     for (i = 0; i < PG_MAX_POLYGON_VERTICES; ++i) {
         if (i < count) {
             pg_dir n = local->normals[i];

@@ -140,6 +140,15 @@ static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return (pg_fix)pg__round_shift64((
 /* d . v for a Q30 direction and a Q16 vector, rounded to Q16. */
 static pg_fix dot_dv(pg_dir d, pg_vec2 v) { return (pg_fix)pg__round_shift64((int64_t)d.x * v.x + (int64_t)d.y * v.y, 30); }
 
+/* round(a c / 2^16) for a wide a and a Q16.16 c: one int64 product when it cannot
+ * overflow (|a| < 2^41, |c| < 2^21: ordinary bodies), the 128-bit path otherwise. */
+static inline int64_t mul_q16(int64_t a, pg_fix c)
+{
+    if (a == 0 || c == 0) return 0;
+    if (a < (INT64_C(1) << 41) && a > -(INT64_C(1) << 41) && c < (1 << 21) && c > -(1 << 21)) return pg__round_shift64(a * c, 16);
+    return pg__mul64_shr(a, c, 16);
+}
+
 /* Coefficients of one row (normal or tangent) for one point; returns the row's
  * normalised denominator. gA = invI_A (rA x d) / K is bounded by 1 / (2 k) for the
  * radius of gyration k >= 0.0177 m in the envelope, so it fits Q8.24 easily. */
@@ -150,9 +159,9 @@ static denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix c
     int32_t kA, kB;
     denominator den;
     if (rotation) {
-        tA = A->inv_inertia != 0 ? pg__mul64_shr(A->inv_inertia, cA, 16) : 0; /* invI (r x d): Q38 per metre */
-        tB = B->inv_inertia != 0 ? pg__mul64_shr(B->inv_inertia, cB, 16) : 0;
-        K += (tA != 0 ? pg__mul64_shr(tA, cA, 16) : 0) + (tB != 0 ? pg__mul64_shr(tB, cB, 16) : 0);
+        tA = mul_q16(A->inv_inertia, cA); /* invI (r x d): Q38 per metre */
+        tB = mul_q16(B->inv_inertia, cB);
+        K += mul_q16(tA, cA) + mul_q16(tB, cB);
     }
     den = make_denominator(K);
     kA = ratio_q(A->inv_mass, den, 30);

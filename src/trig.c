@@ -31,11 +31,18 @@ int32_t pg_angle_cos_q30(pg_angle a) { return pg_angle_sin_q30(a + PG_ANGLE_QUAR
 pg_fix pg_fix_sin(pg_fix radians) { return (pg_fix)pg__round_shift64(pg_angle_sin_q30(pg_angle_from_radians(radians)), 14); }
 pg_fix pg_fix_cos(pg_fix radians) { return (pg_fix)pg__round_shift64(pg_angle_cos_q30(pg_angle_from_radians(radians)), 14); }
 
+/* Linear interpolation between table entries runs along a chord, inside the unit
+ * circle: |(cos, sin)| falls short of 1 by up to (2 pi / 2^bits)^2 / 8. One Newton step
+ * for 1/sqrt(q) near q = 1, r' = r (3 - q) / 2, brings it back to within rounding, so
+ * rotations never shrink the shapes they place. */
 pg_rot pg_rot_from_angle(pg_angle a)
 {
     pg_rot r;
-    r.c = pg_angle_cos_q30(a);
-    r.s = pg_angle_sin_q30(a);
+    int64_t c = pg_angle_cos_q30(a), s = pg_angle_sin_q30(a);
+    int64_t q = c * c + s * s;                                        /* Q60, 1 - 2^-18 < q <= 1 */
+    int64_t f = pg__round_shift64(3 * (INT64_C(1) << 60) - q, 31);   /* (3 - q) / 2 in Q30 */
+    r.c = (int32_t)pg__round_shift64(c * f, 30);
+    r.s = (int32_t)pg__round_shift64(s * f, 30);
     return r;
 }
 

@@ -11,12 +11,12 @@
  *   pg_angle  a binary angle in a uint32_t: a full turn is 2^32, so angles wrap for
  *             free (unsigned overflow is defined in C) and never drift.
  *   pg_rot    a rotation as cosine and sine in Q2.30 (int32_t, 1.0 = 2^30), so applying
- *             it adds no rounding of its own beyond the final one. The pair carries the
- *             sine table's interpolation error: (c, s) lies on a chord of the unit
- *             circle, so | |R| - 1 | <= (2 pi / 2^bits)^2 / 8 + 2^-29 (4.7e-6 with the
- *             default 10-bit table): R is a rotation times a uniform
- *             scale within that of 1, so rotated shapes keep their shape up to that scale,
- *             and R^T (R v) returns v scaled by |R|^2 (tests/unit/test_trig.c).
+ *             it adds no rounding of its own beyond the final one. pg_rot_from_angle
+ *             takes (c, s) from the sine table, which lies on a chord of the unit circle
+ *             (up to (2 pi / 2^bits)^2 / 8 short), and scales it back to unit length
+ *             with one Newton step: | |R| - 1 | < 1.25 * 2^-30 for every table size, so
+ *             rotated shapes keep their size and R^T (R v) returns v within rounding
+ *             (tests/unit/test_trig.c).
  *
  * THE ROUNDING RULE (the only one in pogon)
  *   Every operation that drops bits rounds to nearest, ties away from zero.

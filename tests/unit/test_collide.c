@@ -900,16 +900,23 @@ static pg_geom random_shape(pgt_rng *r, double x, double y)
     int kind = (int)pgt_below(r, 6);
     double ang = rnd(r, 0, 2 * PGT_PI);
     if (kind == 0) return make_circle(x, y, rnd(r, 0.05, 1.0));
-    if (kind == 1) return make_box(rnd(r, 0.1, 1.5), rnd(r, 0.1, 1.5), x, y, ang);
+    if (kind == 1) {
+        /* one draw per statement: argument evaluation order is unspecified in C */
+        double hw = rnd(r, 0.1, 1.5);
+        double hh = rnd(r, 0.1, 1.5);
+        return make_box(hw, hh, x, y, ang);
+    }
     if (kind == 2 || kind == 3) {
         double h = rnd(r, 0.1, 1.2);
-        return make_capsule(x - h * cos(ang), y - h * sin(ang), x + h * cos(ang), y + h * sin(ang), kind == 2 ? rnd(r, 0.05, 0.5) : 0);
+        double radius = kind == 2 ? rnd(r, 0.05, 0.5) : 0;
+        return make_capsule(x - h * cos(ang), y - h * sin(ang), x + h * cos(ang), y + h * sin(ang), radius);
     }
     {   /* a regular-ish polygon of 3..8 vertices */
         double xy[16], rad = rnd(r, 0.2, 1.2);
         int n = 3 + (int)pgt_below(r, 6), i;
         for (i = 0; i < n; ++i) {
-            double a = ang + 2 * PGT_PI * (i + rnd(r, -0.2, 0.2)) / n;
+            double jitter = rnd(r, -0.2, 0.2);
+            double a = ang + 2 * PGT_PI * (i + jitter) / n;
             xy[2 * i] = x + rad * cos(a);
             xy[2 * i + 1] = y + rad * sin(a);
         }
@@ -1010,6 +1017,53 @@ static pg_geom shifted(const pg_geom *g, pg_fix dx, pg_fix dy)
     return h;
 }
 
+/* Regression (random pair 6854 of test_random_pairs): a rotated box A and an octagon B,
+ * apart by 354 LSB. The closest points are A's vertex 1 and the interior of B's face 6,
+ * which is tilted by about 9 degrees against A's face 0. B's face separates them by
+ * 354 LSB, A's by 347: within the reference hysteresis, so A's face used to stay the
+ * reference and B's incident edge was clipped at the side plane through A's vertex 1,
+ * 358 LSB from A: more than the distance. Apart cores now take the better face. */
+static void test_apart_tilted_faces(void **state)
+{
+    static const int32_t av[4][2] = {{88644, -43694}, {-73446, 66126}, {-88644, 43694}, {73446, -66126}};
+    static const int32_t an[4][2] = {{602266598, 888929946}, {-888929946, 602266598}, {-602266598, -888929946}, {888929946, -602266598}};
+    static const int32_t bv[8][2] = {{43243, 73882}, {55289, 116108}, {25554, 173031}, {-16123, 187269},
+                                     {-75086, 159675}, {-90975, 115490}, {-73310, 66453}, {-19737, 41011}};
+    pg_geom a = blank(), b = blank();
+    pg_manifold m, w;
+    double ref, got = 1e300, got2 = 1e300;
+    int i;
+    (void)state;
+    a.count = 4;
+    for (i = 0; i < 4; ++i) {
+        a.vertices[i] = pg_v2(av[i][0], av[i][1]);
+        a.normals[i].x = an[i][0];
+        a.normals[i].y = an[i][1];
+    }
+    b.count = 8;
+    for (i = 0; i < 8; ++i) b.vertices[i] = pg_v2(bv[i][0], bv[i][1]);
+    /* A is a box placed by pg_geom_transform (centroid 0): its own normals, as given */
+    set_normals(&b);
+    ref = core_distance(&a, &b);
+    expect_near(ref, 0.005397413, 1e-8, "reference distance");
+    m = collide(&a, &b, fx(0.1));
+    PG_EXPECT_LE(1, m.count, "%s", "contact");
+    expect_unit(m.normal);
+    for (i = 0; i < m.count; ++i)
+        if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
+    PG_EXPECT_LE(got - ref, 3.0 / 65536, "separation %.6f reference %.6f", got, ref);
+    PG_EXPECT_LE(-3e-4, got - ref, "separation %.6f reference %.6f", got, ref);
+    /* B's face 6 is the reference: the normal points from A to B along -n6 */
+    PG_EXPECT_EQ(m.normal.x, -b.normals[6].x, "%s", "normal x");
+    PG_EXPECT_EQ(m.normal.y, -b.normals[6].y, "%s", "normal y");
+    w = collide(&b, &a, fx(0.1));
+    PG_EXPECT_LE(1, w.count, "%s", "swapped contact");
+    for (i = 0; i < w.count; ++i)
+        if (dbl(w.points[i].separation) < got2) got2 = dbl(w.points[i].separation);
+    PG_EXPECT_LE(got2 - ref, 3.0 / 65536, "swapped separation %.6f reference %.6f", got2, ref);
+    PG_EXPECT_LE(-3e-4, got2 - ref, "swapped separation %.6f reference %.6f", got2, ref);
+}
+
 static void test_random_pairs(void **state)
 {
     pgt_rng rng = pgt_rng_seed(2024);
@@ -1017,7 +1071,12 @@ static void test_random_pairs(void **state)
     double worst_apart = 0, worst_deep = 0;
     (void)state;
     for (iter = 0; iter < 30000; ++iter) {
-        pg_geom a = random_shape(&rng, 0, 0), b = random_shape(&rng, rnd(&rng, -2.5, 2.5), rnd(&rng, -2.5, 2.5));
+        /* One random draw per statement, in this order: the order in which a call's
+         * arguments are evaluated is unspecified, and gcc and clang differ. */
+        pg_geom a = random_shape(&rng, 0, 0), b;
+        double bx = rnd(&rng, -2.5, 2.5);
+        double by = rnd(&rng, -2.5, 2.5);
+        b = random_shape(&rng, bx, by);
         pg_fix spec = fx(0.1);
         pg_manifold m = collide(&a, &b, spec), w;
         double radii = dbl(a.radius) + dbl(b.radius), d = core_distance(&a, &b), ref, got = 1e300;
@@ -1114,6 +1173,7 @@ int main(void)
         cmocka_unit_test(test_aabb),
         cmocka_unit_test(test_transform),
         cmocka_unit_test(test_far_from_origin),
+        cmocka_unit_test(test_apart_tilted_faces),
         cmocka_unit_test(test_random_pairs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
