@@ -443,16 +443,30 @@ pg_result pg_body_apply_force(pg_world *world, pg_body_id id, pg_vec2 force)
     return PG_OK;
 }
 
+/* (point - centre) x v, Q16.16 result in int64: |r| < 2^27, |v| < 2^31. */
+static int64_t moment_about_center(const pg_body *b, pg_vec2 point, pg_vec2 v)
+{
+    int64_t rx = (int64_t)point.x - b->center.x, ry = (int64_t)point.y - b->center.y;
+    return pg__round_shift64(rx * v.y - ry * v.x, 16);
+}
+
+/* w += invI * angular_impulse, within the +-1000 rad/s envelope; no-op for fixed rotation. */
+static void add_angular_impulse(pg_body *b, int64_t impulse)
+{
+    int64_t w;
+    if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return;
+    w = (int64_t)b->w + pg__mul64_shr(impulse, b->inv_inertia, 38);
+    b->w = (pg_fix)(w > PG_FIX_C(1000) ? PG_FIX_C(1000) : w < -PG_FIX_C(1000) ? -PG_FIX_C(1000) : w);
+}
+
 pg_result pg_body_apply_force_at(pg_world *world, pg_body_id id, pg_vec2 force, pg_vec2 point)
 {
     pg_body *b = NULL;
     pg_result r = dynamic_body(world, id, "pg_body_apply_force_at: body handle is stale or invalid", &b);
-    int64_t rx, ry, torque;
+    int64_t torque;
     if (r != PG_OK) return r;
     if (!in_position_envelope(point)) return pg__fail(world, PG_ERR_ENVELOPE, "point is outside +-1000 m");
-    rx = (int64_t)point.x - b->center.x;
-    ry = (int64_t)point.y - b->center.y;
-    torque = pg__round_shift64(rx * force.y - ry * force.x, 16); /* |r| < 2^27, |F| < 2^31 */
+    torque = moment_about_center(b, point, force);
     b->force_x = accumulate(b->force_x, force.x);
     b->force_y = accumulate(b->force_y, force.y);
     b->torque = accumulate(b->torque, torque);
@@ -474,18 +488,11 @@ pg_result pg_body_apply_linear_impulse(pg_world *world, pg_body_id id, pg_vec2 i
 {
     pg_body *b = NULL;
     pg_result r = dynamic_body(world, id, "pg_body_apply_linear_impulse: body handle is stale or invalid", &b);
-    int64_t rx, ry, ang;
     if (r != PG_OK) return r;
     if (!in_position_envelope(point)) return pg__fail(world, PG_ERR_ENVELOPE, "point is outside +-1000 m");
     b->v = pg__clamp_speed(world, pg_v2(pg__sat64((int64_t)b->v.x + pg__mul64_shr(impulse.x, b->inv_mass, 38)),
                                         pg__sat64((int64_t)b->v.y + pg__mul64_shr(impulse.y, b->inv_mass, 38))));
-    rx = (int64_t)point.x - b->center.x;
-    ry = (int64_t)point.y - b->center.y;
-    ang = pg__round_shift64(rx * impulse.y - ry * impulse.x, 16);
-    if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0) {
-        int64_t w = (int64_t)b->w + pg__mul64_shr(ang, b->inv_inertia, 38);
-        b->w = (pg_fix)(w > PG_FIX_C(1000) ? PG_FIX_C(1000) : w < -PG_FIX_C(1000) ? -PG_FIX_C(1000) : w);
-    }
+    add_angular_impulse(b, moment_about_center(b, point, impulse));
     pg__wake_body(world, id.index);
     return PG_OK;
 }
@@ -494,11 +501,8 @@ pg_result pg_body_apply_angular_impulse(pg_world *world, pg_body_id id, pg_fix i
 {
     pg_body *b = NULL;
     pg_result r = dynamic_body(world, id, "pg_body_apply_angular_impulse: body handle is stale or invalid", &b);
-    int64_t w;
     if (r != PG_OK) return r;
-    if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return PG_OK;
-    w = (int64_t)b->w + pg__mul64_shr(impulse, b->inv_inertia, 38);
-    b->w = (pg_fix)(w > PG_FIX_C(1000) ? PG_FIX_C(1000) : w < -PG_FIX_C(1000) ? -PG_FIX_C(1000) : w);
+    add_angular_impulse(b, impulse);
     pg__wake_body(world, id.index);
     return PG_OK;
 }

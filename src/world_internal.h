@@ -92,7 +92,7 @@ struct pg_world {
     uint64_t frame;
     pg_body *bodies;
     pg_shape *shapes;
-    pg_contact *contacts, *contacts_next; /* double buffer, swapped each step */
+    pg_contact *contacts, *contacts_next; /* two buffers, swapped each step */
     uint32_t contact_count;
     uint32_t body_high;        /* one past the highest body slot ever used */
     uint32_t shape_high;
