@@ -141,7 +141,6 @@ pg_result pg_body_destroy(pg_world *world, pg_body_id id)
     b->flags = 0;
     b->first_shape = PG_NULL_INDEX;
     world->body_count -= 1u;
-    while (world->body_high > 0 && (world->bodies[world->body_high - 1u].flags & PG_BODY_FLAG_USED) == 0) world->body_high -= 1u;
     return PG_OK;
 }
 
@@ -332,7 +331,7 @@ pg_result pg_body_set_awake(pg_world *world, pg_body_id id, int awake)
     if (awake) {
         pg__wake_body(world, id.index);
     } else if ((world->def.effects & PG_EFFECT_SLEEPING) != 0 && b->type == PG_BODY_DYNAMIC) {
-        b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
+        b->flags = (b->flags & ~(uint32_t)PG_BODY_FLAG_AWAKE) | PG_BODY_FLAG_GEOMETRY_DIRTY;
         b->v = pg_v2_zero();
         b->w = 0;
         b->island = id.index;

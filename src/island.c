@@ -61,7 +61,9 @@ void pg__update_sleep(pg_world *w)
         if (!pg__body_is_active(b)) continue;
         r = find_root(parent, i);
         if (min_time[r] >= w->def.time_to_sleep) {
-            b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
+            /* its cached world geometry is from the start of this step: recompute it at
+             * the next, so cached geometry is always a function of the saved state */
+            b->flags = (b->flags & ~(uint32_t)PG_BODY_FLAG_AWAKE) | PG_BODY_FLAG_GEOMETRY_DIRTY;
             b->v = pg_v2_zero();
             b->w = 0;
             b->island = r;

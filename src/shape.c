@@ -148,7 +148,7 @@ pg_shape_def pg_default_shape_def(void)
     return d;
 }
 
-static void build_local(const pg_geometry *g, pg_geom *out)
+void pg__shape_build_local(const pg_geometry *g, pg_geom *out)
 {
     int32_t i, n = g->count;
     int64_t cx = 0, cy = 0;
@@ -239,7 +239,7 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     s->body = body.index;
     s->next = PG_NULL_INDEX;
     s->geometry = *geometry;
-    build_local(geometry, &s->local);
+    pg__shape_build_local(geometry, &s->local);
     s->density = def->density;
     s->friction = def->friction;
     s->restitution = def->restitution;

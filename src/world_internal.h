@@ -94,7 +94,8 @@ struct pg_world {
     pg_shape *shapes;
     pg_contact *contacts, *contacts_next; /* two buffers, swapped each step */
     uint32_t contact_count;
-    uint32_t body_high;        /* one past the highest body slot ever used */
+    uint32_t body_high;        /* one past the highest body slot ever used (never shrinks:
+                                  the generations of freed slots are state) */
     uint32_t shape_high;
     uint32_t body_count, shape_count;
     pg_world_stats stats;
@@ -133,6 +134,9 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index); /* world geom
 void pg__wake_body(pg_world *world, uint32_t body_index);         /* and its island */
 int pg__body_is_active(const pg_body *b); /* awake and movable: takes part in the solver */
 pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v);                /* the documented speed cap */
+
+/* shape.c */
+void pg__shape_build_local(const pg_geometry *g, pg_geom *out); /* collision form of a geometry */
 
 /* contact.c */
 pg_result pg__update_contacts(pg_world *world);

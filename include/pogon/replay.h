@@ -1,0 +1,166 @@
+/* pogon/replay.h — determinism you can prove: commands, state hashes, snapshots,
+ * scene files and replay files.
+ *
+ * COMMANDS
+ *   Every change made to a world from outside a step has a command form (pg_command).
+ *   A front end that drives its world only through commands can log them, and the log
+ *   reproduces the run bit for bit. pg_command_apply() applies one now; a
+ *   pg_command_queue (caller memory) holds commands for later frames and applies the due
+ *   ones before a step.
+ *
+ * STATE HASH
+ *   pg_world_hash() is a 64-bit hash of everything that influences future steps,
+ *   computed over the canonical little-endian encoding that snapshots use, so it is the
+ *   same on every platform. pg_world_section_hashes() splits it by section, and
+ *   pg_world_diff_snapshots() names the first body or contact where two states differ.
+ *
+ * SNAPSHOTS
+ *   pg_world_snapshot_save() writes the whole world state into a caller buffer in a
+ *   compact canonical encoding (not a memory dump); pg_world_snapshot_restore() puts it
+ *   back into a world created with the same capacities. Stepping after a restore is
+ *   bit-identical to never having saved. Handles that existed at the snapshot are valid
+ *   after a restore; handles made after it are stale.
+ *
+ * SCENE FILES (text) and REPLAY FILES (binary) are specified in docs/formats.md.
+ */
+#ifndef POGON_REPLAY_H
+#define POGON_REPLAY_H
+
+#include "pogon/pogon.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- commands ------------------------------------------------------------------------- */
+typedef enum pg_command_kind {
+    PG_CMD_NONE = 0,
+    PG_CMD_CREATE_BODY = 1,        /* body_def -> a new body (its id in the result) */
+    PG_CMD_DESTROY_BODY = 2,       /* body */
+    PG_CMD_ADD_SHAPE = 3,          /* body, shape_def, geometry */
+    PG_CMD_MAKE = 4,               /* make_kind, body_def, shape_def, size0, size1 */
+    PG_CMD_SET_TRANSFORM = 5,      /* body, vec (position), angle */
+    PG_CMD_SET_LINEAR_VELOCITY = 6,/* body, vec */
+    PG_CMD_SET_ANGULAR_VELOCITY = 7,/* body, scalar */
+    PG_CMD_APPLY_FORCE = 8,        /* body, vec (force), point: at the centre of mass when flag is 0 */
+    PG_CMD_APPLY_TORQUE = 9,       /* body, scalar */
+    PG_CMD_APPLY_LINEAR_IMPULSE = 10, /* body, vec (impulse), point */
+    PG_CMD_APPLY_ANGULAR_IMPULSE = 11,/* body, scalar */
+    PG_CMD_SET_BODY_TYPE = 12,     /* body, value (pg_body_type) */
+    PG_CMD_SET_AWAKE = 13,         /* body, value (0 or 1) */
+    PG_CMD_SET_GRAVITY = 14,       /* vec */
+    PG_CMD_SET_EFFECTS = 15,       /* value (PG_EFFECT_* bits) */
+    PG_CMD_SET_GRAVITY_SCALE = 16, /* body, scalar */
+    PG_CMD_SET_DAMPING = 17,       /* body, scalar (linear), scalar2 (angular) */
+    PG_CMD_SET_FRICTION = 18,      /* body, scalar */
+    PG_CMD_SET_RESTITUTION = 19,   /* body, scalar */
+    PG_CMD_SET_DENSITY = 20,       /* body, scalar */
+    PG_CMD_SET_FIXED_ROTATION = 21,/* body, value */
+    PG_CMD_SET_FILTER = 22,        /* body, value (category), value2 (mask) */
+    PG_CMD_SET_USER_DATA = 23,     /* body, user_data */
+    PG_CMD_KIND_COUNT
+} pg_command_kind;
+
+typedef enum pg_make_kind {
+    PG_MAKE_BALL = 0,     /* size0 = radius */
+    PG_MAKE_CAPSULE = 1,  /* size0 = length, size1 = radius */
+    PG_MAKE_BOX = 2,      /* size0 = width, size1 = height */
+    PG_MAKE_TRIANGLE = 3, /* size0 = circumradius */
+    PG_MAKE_STAR = 4,     /* size0 = circumradius */
+    PG_MAKE_WALL = 5,     /* size0 = width, size1 = height */
+    PG_MAKE_KIND_COUNT
+} pg_make_kind;
+
+/* One command. Only the fields its kind names are read; the rest must be zero so a
+ * command has one encoding (pg_command_init zeroes it). */
+typedef struct pg_command {
+    pg_command_kind kind;
+    pg_body_id body;
+    pg_vec2 vec;
+    pg_vec2 point;
+    pg_fix scalar, scalar2;
+    pg_angle angle;
+    uint32_t value, value2;
+    uint32_t flag;          /* APPLY_FORCE: 1 = at `point` */
+    uint64_t user_data;
+    pg_make_kind make_kind;
+    pg_fix size0, size1;
+    pg_body_def body_def;
+    pg_shape_def shape_def;
+    pg_geometry geometry;
+} pg_command;
+
+/* A zeroed command of the given kind. */
+pg_command pg_command_init(pg_command_kind kind);
+/* Stable lower-case names ("set_linear_velocity") for files and messages. */
+const char *pg_command_kind_name(pg_command_kind kind);
+/* Apply one command now. `created` (may be NULL) receives the new body of CREATE_BODY
+ * and MAKE. Returns the result of the call the command stands for. */
+pg_result pg_command_apply(pg_world *world, const pg_command *command, pg_body_id *created);
+
+/* Binary form of a command, little-endian fixed-width fields (docs/formats.md):
+ * u8 kind, then the fields that kind uses, in the order of the struct. Encoding is
+ * canonical: decode(encode(c)) == c for every valid command. */
+#define PG_COMMAND_ENCODED_MAX 256
+/* Bytes written (0 if the command is invalid or `capacity` is short). */
+size_t pg_command_encode(const pg_command *command, uint8_t *buffer, size_t capacity);
+/* Decode one command from `size` bytes. On success *consumed is its length. On failure
+ * returns PG_ERR_INVALID_ARGUMENT and sets *error_offset (from `buffer`) and
+ * *error_field (a static string naming the field) when those pointers are not NULL. */
+pg_result pg_command_decode(const uint8_t *buffer, size_t size, pg_command *command, size_t *consumed,
+                            size_t *error_offset, const char **error_field);
+
+/* A queue of commands for later frames, in caller memory. Commands for the same
+ * frame keep the order they were pushed in. */
+typedef struct pg_command_queue {
+    pg_command *commands;
+    uint64_t *frames;
+    uint32_t capacity, count;
+} pg_command_queue;
+void pg_command_queue_init(pg_command_queue *q, pg_command *commands, uint64_t *frames, uint32_t capacity);
+/* PG_ERR_CAPACITY when full; PG_ERR_INVALID_ARGUMENT for a frame already past. */
+pg_result pg_command_queue_push(pg_command_queue *q, const pg_world *world, uint64_t frame, const pg_command *command);
+/* Apply (in order) and remove the commands due at the world's current frame. Returns
+ * the number applied; a failing command is applied as its call would be (no change)
+ * and counted in *failures (may be NULL). */
+uint32_t pg_command_queue_apply_due(pg_command_queue *q, pg_world *world, uint32_t *failures);
+
+/* ---- hashes ---------------------------------------------------------------------------- */
+typedef enum pg_section {
+    PG_SECTION_SETTINGS = 0,  /* world def in force, frame counter, statistics that persist */
+    PG_SECTION_BODIES = 1,    /* body pool: slots, generations, motion, sleep timers, islands */
+    PG_SECTION_SHAPES = 2,    /* shape pool: slots, generations, geometry, material, filter */
+    PG_SECTION_CONTACTS = 3,  /* contact list in order: manifolds, warm-start impulses */
+    PG_SECTION_BROADPHASE = 4,/* the broadphase's inputs kept between steps (proxy boxes) */
+    PG_SECTION_JOINTS = 5,    /* reserved: no joints yet (hashes the empty section) */
+    PG_SECTION_COUNT
+} pg_section;
+
+const char *pg_section_name(pg_section s);
+/* 64-bit hash of the canonical encoding of the whole state (all sections). */
+uint64_t pg_world_hash(const pg_world *world);
+void pg_world_section_hashes(const pg_world *world, uint64_t out[PG_SECTION_COUNT]);
+
+/* The hash function itself (FNV-1a 64 over bytes), for files and tools. */
+uint64_t pg_hash_bytes(uint64_t seed, const void *data, size_t size);
+#define PG_HASH_SEED UINT64_C(0xcbf29ce484222325)
+
+/* ---- snapshots ------------------------------------------------------------------------- */
+/* Bytes a snapshot of this world needs now (it grows with bodies, shapes, contacts). */
+size_t pg_world_snapshot_size(const pg_world *world);
+/* Write the snapshot; *written receives its size. PG_ERR_MEMORY if `capacity` is short. */
+pg_result pg_world_snapshot_save(const pg_world *world, void *buffer, size_t capacity, size_t *written);
+/* Restore into `world` (created with capacities at least those of the saved world).
+ * The snapshot is validated first: a corrupt one changes nothing and returns
+ * PG_ERR_INVALID_ARGUMENT with the offset and field in pg_world_last_error(). */
+pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_t size);
+
+/* Where two states first differ: the section, and the index of the first body, shape or
+ * contact that differs in it (or -1). Returns 0 when they are identical. */
+typedef struct pg_divergence { pg_section section; int64_t index; } pg_divergence;
+int pg_world_diff_snapshots(const void *a, size_t a_size, const void *b, size_t b_size, pg_divergence *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,361 @@
+/* command.c — the command form of every change made to a world from outside a step,
+ * its canonical binary encoding, and a queue for later frames. */
+#include "pogon/replay.h"
+
+static const char *const kind_names[PG_CMD_KIND_COUNT] = {
+    "none", "create_body", "destroy_body", "add_shape", "make", "set_transform", "set_linear_velocity",
+    "set_angular_velocity", "apply_force", "apply_torque", "apply_linear_impulse", "apply_angular_impulse",
+    "set_body_type", "set_awake", "set_gravity", "set_effects", "set_gravity_scale", "set_damping",
+    "set_friction", "set_restitution", "set_density", "set_fixed_rotation", "set_filter", "set_user_data"};
+
+const char *pg_command_kind_name(pg_command_kind kind)
+{
+    return (unsigned)kind < PG_CMD_KIND_COUNT ? kind_names[kind] : "unknown";
+}
+
+pg_command pg_command_init(pg_command_kind kind)
+{
+    pg_command c;
+    unsigned char *p = (unsigned char *)&c;
+    size_t i;
+    for (i = 0; i < sizeof c; ++i) p[i] = 0; /* padding too: a command has one byte image */
+    c.kind = kind;
+    return c;
+}
+
+/* Which fields each kind carries (also the order they are encoded in). */
+enum {
+    F_BODY = 1u << 0, F_VEC = 1u << 1, F_POINT = 1u << 2, F_SCALAR = 1u << 3, F_SCALAR2 = 1u << 4,
+    F_ANGLE = 1u << 5, F_VALUE = 1u << 6, F_VALUE2 = 1u << 7, F_FLAG = 1u << 8, F_USER = 1u << 9,
+    F_MAKE = 1u << 10, F_BODY_DEF = 1u << 11, F_SHAPE_DEF = 1u << 12, F_GEOMETRY = 1u << 13
+};
+
+static const uint32_t kind_fields[PG_CMD_KIND_COUNT] = {
+    0,
+    F_BODY_DEF,                                  /* create_body */
+    F_BODY,                                      /* destroy_body */
+    F_BODY | F_SHAPE_DEF | F_GEOMETRY,           /* add_shape */
+    F_MAKE | F_BODY_DEF | F_SHAPE_DEF,           /* make */
+    F_BODY | F_VEC | F_ANGLE,                    /* set_transform */
+    F_BODY | F_VEC,                              /* set_linear_velocity */
+    F_BODY | F_SCALAR,                           /* set_angular_velocity */
+    F_BODY | F_VEC | F_FLAG | F_POINT,           /* apply_force */
+    F_BODY | F_SCALAR,                           /* apply_torque */
+    F_BODY | F_VEC | F_POINT,                    /* apply_linear_impulse */
+    F_BODY | F_SCALAR,                           /* apply_angular_impulse */
+    F_BODY | F_VALUE,                            /* set_body_type */
+    F_BODY | F_VALUE,                            /* set_awake */
+    F_VEC,                                       /* set_gravity */
+    F_VALUE,                                     /* set_effects */
+    F_BODY | F_SCALAR,                           /* set_gravity_scale */
+    F_BODY | F_SCALAR | F_SCALAR2,               /* set_damping */
+    F_BODY | F_SCALAR,                           /* set_friction */
+    F_BODY | F_SCALAR,                           /* set_restitution */
+    F_BODY | F_SCALAR,                           /* set_density */
+    F_BODY | F_VALUE,                            /* set_fixed_rotation */
+    F_BODY | F_VALUE | F_VALUE2,                 /* set_filter */
+    F_BODY | F_USER                              /* set_user_data */
+};
+
+pg_result pg_command_apply(pg_world *w, const pg_command *c, pg_body_id *created)
+{
+    pg_body_id id = {0, 0};
+    pg_shape_id sid;
+    pg_result r;
+    if (created != NULL) *created = id;
+    if (w == NULL || c == NULL) return PG_ERR_NULL;
+    switch (c->kind) {
+    case PG_CMD_CREATE_BODY: r = pg_body_create(w, &c->body_def, &id); break;
+    case PG_CMD_DESTROY_BODY: return pg_body_destroy(w, c->body);
+    case PG_CMD_ADD_SHAPE: return pg_shape_create(w, c->body, &c->shape_def, &c->geometry, &sid);
+    case PG_CMD_MAKE:
+        switch (c->make_kind) {
+        case PG_MAKE_BALL: r = pg_make_ball(w, &c->body_def, &c->shape_def, c->size0, &id); break;
+        case PG_MAKE_CAPSULE: r = pg_make_capsule(w, &c->body_def, &c->shape_def, c->size0, c->size1, &id); break;
+        case PG_MAKE_BOX: r = pg_make_box(w, &c->body_def, &c->shape_def, c->size0, c->size1, &id); break;
+        case PG_MAKE_TRIANGLE: r = pg_make_triangle(w, &c->body_def, &c->shape_def, c->size0, &id); break;
+        case PG_MAKE_STAR: r = pg_make_star(w, &c->body_def, &c->shape_def, c->size0, &id); break;
+        case PG_MAKE_WALL: r = pg_make_wall(w, &c->body_def, &c->shape_def, c->size0, c->size1, &id); break;
+        default: return PG_ERR_INVALID_ARGUMENT;
+        }
+        break;
+    case PG_CMD_SET_TRANSFORM: return pg_body_set_transform(w, c->body, c->vec, c->angle);
+    case PG_CMD_SET_LINEAR_VELOCITY: return pg_body_set_linear_velocity(w, c->body, c->vec);
+    case PG_CMD_SET_ANGULAR_VELOCITY: return pg_body_set_angular_velocity(w, c->body, c->scalar);
+    case PG_CMD_APPLY_FORCE:
+        return c->flag ? pg_body_apply_force_at(w, c->body, c->vec, c->point) : pg_body_apply_force(w, c->body, c->vec);
+    case PG_CMD_APPLY_TORQUE: return pg_body_apply_torque(w, c->body, c->scalar);
+    case PG_CMD_APPLY_LINEAR_IMPULSE: return pg_body_apply_linear_impulse(w, c->body, c->vec, c->point);
+    case PG_CMD_APPLY_ANGULAR_IMPULSE: return pg_body_apply_angular_impulse(w, c->body, c->scalar);
+    case PG_CMD_SET_BODY_TYPE: return pg_body_set_type(w, c->body, (pg_body_type)c->value);
+    case PG_CMD_SET_AWAKE: return pg_body_set_awake(w, c->body, c->value != 0);
+    case PG_CMD_SET_GRAVITY: return pg_world_set_gravity(w, c->vec);
+    case PG_CMD_SET_EFFECTS: return pg_world_set_effects(w, c->value);
+    case PG_CMD_SET_GRAVITY_SCALE: return pg_body_set_gravity_scale(w, c->body, c->scalar);
+    case PG_CMD_SET_DAMPING: return pg_body_set_damping(w, c->body, c->scalar, c->scalar2);
+    case PG_CMD_SET_FRICTION: return pg_body_set_friction(w, c->body, c->scalar);
+    case PG_CMD_SET_RESTITUTION: return pg_body_set_restitution(w, c->body, c->scalar);
+    case PG_CMD_SET_DENSITY: return pg_body_set_density(w, c->body, c->scalar);
+    case PG_CMD_SET_FIXED_ROTATION: return pg_body_set_fixed_rotation(w, c->body, c->value != 0);
+    case PG_CMD_SET_FILTER: return pg_body_set_filter(w, c->body, c->value, c->value2);
+    case PG_CMD_SET_USER_DATA: return pg_body_set_user_data(w, c->body, c->user_data);
+    default: return PG_ERR_INVALID_ARGUMENT;
+    }
+    if (r == PG_OK && created != NULL) *created = id;
+    return r;
+}
+
+/* ---- binary encoding ---------------------------------------------------------------- */
+typedef struct writer { uint8_t *p; size_t cap, len; int ok; } writer;
+
+static void put_u8(writer *w, uint32_t v)
+{
+    if (w->len + 1u > w->cap) { w->ok = 0; return; }
+    w->p[w->len++] = (uint8_t)(v & 0xFFu);
+}
+static void put_u32(writer *w, uint32_t v) { put_u8(w, v); put_u8(w, v >> 8); put_u8(w, v >> 16); put_u8(w, v >> 24); }
+static void put_i32(writer *w, int32_t v) { put_u32(w, (uint32_t)v); }
+static void put_u64(writer *w, uint64_t v) { put_u32(w, (uint32_t)(v & 0xFFFFFFFFu)); put_u32(w, (uint32_t)(v >> 32)); }
+static void put_vec(writer *w, pg_vec2 v) { put_i32(w, v.x); put_i32(w, v.y); }
+
+size_t pg_command_encode(const pg_command *c, uint8_t *buffer, size_t capacity)
+{
+    writer w;
+    uint32_t f;
+    int32_t i;
+    if (c == NULL || buffer == NULL || (unsigned)c->kind >= PG_CMD_KIND_COUNT || c->kind == PG_CMD_NONE) return 0;
+    if ((kind_fields[c->kind] & F_GEOMETRY) != 0 && (c->geometry.count < 0 || c->geometry.count > PG_MAX_VERTICES)) return 0;
+    w.p = buffer;
+    w.cap = capacity;
+    w.len = 0;
+    w.ok = 1;
+    f = kind_fields[c->kind];
+    put_u8(&w, (uint32_t)c->kind);
+    if (f & F_BODY) { put_u32(&w, c->body.index); put_u32(&w, c->body.generation); }
+    if (f & F_VEC) put_vec(&w, c->vec);
+    if (f & F_FLAG) put_u8(&w, c->flag != 0);
+    if (f & F_POINT) put_vec(&w, c->point);
+    if (f & F_SCALAR) put_i32(&w, c->scalar);
+    if (f & F_SCALAR2) put_i32(&w, c->scalar2);
+    if (f & F_ANGLE) put_u32(&w, c->angle);
+    if (f & F_VALUE) put_u32(&w, c->value);
+    if (f & F_VALUE2) put_u32(&w, c->value2);
+    if (f & F_USER) put_u64(&w, c->user_data);
+    if (f & F_MAKE) { put_u8(&w, (uint32_t)c->make_kind); put_i32(&w, c->size0); put_i32(&w, c->size1); }
+    if (f & F_BODY_DEF) {
+        const pg_body_def *d = &c->body_def;
+        put_u8(&w, (uint32_t)d->type);
+        put_vec(&w, d->position);
+        put_u32(&w, d->angle);
+        put_vec(&w, d->linear_velocity);
+        put_i32(&w, d->angular_velocity);
+        put_i32(&w, d->linear_damping);
+        put_i32(&w, d->angular_damping);
+        put_i32(&w, d->gravity_scale);
+        put_u8(&w, d->fixed_rotation != 0);
+        put_u8(&w, d->allow_sleep != 0);
+        put_u8(&w, d->awake != 0);
+        put_u64(&w, d->user_data);
+    }
+    if (f & F_SHAPE_DEF) {
+        const pg_shape_def *d = &c->shape_def;
+        put_i32(&w, d->density);
+        put_i32(&w, d->friction);
+        put_i32(&w, d->restitution);
+        put_u32(&w, d->category);
+        put_u32(&w, d->mask);
+    }
+    if (f & F_GEOMETRY) {
+        put_u8(&w, (uint32_t)c->geometry.kind);
+        put_u8(&w, (uint32_t)c->geometry.count);
+        for (i = 0; i < c->geometry.count; ++i) put_vec(&w, c->geometry.vertices[i]);
+        put_i32(&w, c->geometry.radius);
+    }
+    return w.ok ? w.len : 0;
+}
+
+typedef struct reader {
+    const uint8_t *p;
+    size_t size, pos;
+    size_t error_offset;
+    const char *error_field;
+} reader;
+
+static int need(reader *r, size_t n, const char *field)
+{
+    if (r->error_field != NULL) return 0;
+    if (r->size - r->pos < n) {
+        r->error_offset = r->pos;
+        r->error_field = field;
+        return 0;
+    }
+    return 1;
+}
+static uint32_t get_u8(reader *r, const char *field) { return need(r, 1, field) ? r->p[r->pos++] : 0u; }
+static uint32_t get_u32(reader *r, const char *field)
+{
+    uint32_t v;
+    if (!need(r, 4, field)) return 0;
+    v = (uint32_t)r->p[r->pos] | (uint32_t)r->p[r->pos + 1] << 8 | (uint32_t)r->p[r->pos + 2] << 16 | (uint32_t)r->p[r->pos + 3] << 24;
+    r->pos += 4;
+    return v;
+}
+/* uint32 -> int32 without implementation-defined conversion */
+static int32_t to_i32(uint32_t u) { return u <= (uint32_t)INT32_MAX ? (int32_t)u : -(int32_t)(~u) - 1; }
+static int32_t get_i32(reader *r, const char *field) { return to_i32(get_u32(r, field)); }
+static uint64_t get_u64(reader *r, const char *field)
+{
+    uint64_t lo = get_u32(r, field);
+    return lo | (uint64_t)get_u32(r, field) << 32;
+}
+static pg_vec2 get_vec(reader *r, const char *field)
+{
+    pg_vec2 v;
+    v.x = get_i32(r, field);
+    v.y = get_i32(r, field);
+    return v;
+}
+static int bad(reader *r, size_t at, const char *field)
+{
+    if (r->error_field == NULL) {
+        r->error_offset = at;
+        r->error_field = field;
+    }
+    return 0;
+}
+static uint32_t get_bool(reader *r, const char *field)
+{
+    size_t at = r->pos;
+    uint32_t v = get_u8(r, field);
+    if (v > 1u) bad(r, at, field);
+    return v;
+}
+
+pg_result pg_command_decode(const uint8_t *buffer, size_t size, pg_command *c, size_t *consumed, size_t *error_offset,
+                            const char **error_field)
+{
+    reader r;
+    uint32_t f, kind;
+    int32_t i;
+    size_t at;
+    if (consumed != NULL) *consumed = 0;
+    if (buffer == NULL || c == NULL) return PG_ERR_NULL;
+    r.p = buffer;
+    r.size = size;
+    r.pos = 0;
+    r.error_field = NULL;
+    r.error_offset = 0;
+    kind = get_u8(&r, "command.kind");
+    if (r.error_field == NULL && (kind == 0 || kind >= PG_CMD_KIND_COUNT)) bad(&r, 0, "command.kind");
+    *c = pg_command_init(r.error_field == NULL ? (pg_command_kind)kind : PG_CMD_NONE);
+    f = r.error_field == NULL ? kind_fields[kind] : 0u;
+    if (f & F_BODY) { c->body.index = get_u32(&r, "command.body.index"); c->body.generation = get_u32(&r, "command.body.generation"); }
+    if (f & F_VEC) c->vec = get_vec(&r, "command.vec");
+    if (f & F_FLAG) c->flag = get_bool(&r, "command.flag");
+    if (f & F_POINT) c->point = get_vec(&r, "command.point");
+    if (f & F_SCALAR) c->scalar = get_i32(&r, "command.scalar");
+    if (f & F_SCALAR2) c->scalar2 = get_i32(&r, "command.scalar2");
+    if (f & F_ANGLE) c->angle = get_u32(&r, "command.angle");
+    if (f & F_VALUE) c->value = get_u32(&r, "command.value");
+    if (f & F_VALUE2) c->value2 = get_u32(&r, "command.value2");
+    if (f & F_USER) c->user_data = get_u64(&r, "command.user_data");
+    if (f & F_MAKE) {
+        at = r.pos;
+        c->make_kind = (pg_make_kind)get_u8(&r, "command.make_kind");
+        if ((unsigned)c->make_kind >= PG_MAKE_KIND_COUNT) bad(&r, at, "command.make_kind");
+        c->size0 = get_i32(&r, "command.size0");
+        c->size1 = get_i32(&r, "command.size1");
+    }
+    if (f & F_BODY_DEF) {
+        pg_body_def *d = &c->body_def;
+        at = r.pos;
+        d->type = (pg_body_type)get_u8(&r, "command.body_def.type");
+        if ((unsigned)d->type > (unsigned)PG_BODY_DYNAMIC) bad(&r, at, "command.body_def.type");
+        d->position = get_vec(&r, "command.body_def.position");
+        d->angle = get_u32(&r, "command.body_def.angle");
+        d->linear_velocity = get_vec(&r, "command.body_def.linear_velocity");
+        d->angular_velocity = get_i32(&r, "command.body_def.angular_velocity");
+        d->linear_damping = get_i32(&r, "command.body_def.linear_damping");
+        d->angular_damping = get_i32(&r, "command.body_def.angular_damping");
+        d->gravity_scale = get_i32(&r, "command.body_def.gravity_scale");
+        d->fixed_rotation = (int)get_bool(&r, "command.body_def.fixed_rotation");
+        d->allow_sleep = (int)get_bool(&r, "command.body_def.allow_sleep");
+        d->awake = (int)get_bool(&r, "command.body_def.awake");
+        d->user_data = get_u64(&r, "command.body_def.user_data");
+    }
+    if (f & F_SHAPE_DEF) {
+        pg_shape_def *d = &c->shape_def;
+        d->density = get_i32(&r, "command.shape_def.density");
+        d->friction = get_i32(&r, "command.shape_def.friction");
+        d->restitution = get_i32(&r, "command.shape_def.restitution");
+        d->category = get_u32(&r, "command.shape_def.category");
+        d->mask = get_u32(&r, "command.shape_def.mask");
+    }
+    if (f & F_GEOMETRY) {
+        at = r.pos;
+        c->geometry.kind = (pg_shape_kind)get_u8(&r, "command.geometry.kind");
+        if ((unsigned)c->geometry.kind > (unsigned)PG_SHAPE_POLYGON) bad(&r, at, "command.geometry.kind");
+        at = r.pos;
+        c->geometry.count = (int32_t)get_u8(&r, "command.geometry.count");
+        if (c->geometry.count > PG_MAX_VERTICES) bad(&r, at, "command.geometry.count");
+        for (i = 0; r.error_field == NULL && i < c->geometry.count; ++i) c->geometry.vertices[i] = get_vec(&r, "command.geometry.vertex");
+        c->geometry.radius = get_i32(&r, "command.geometry.radius");
+    }
+    if (r.error_field != NULL) {
+        if (error_offset != NULL) *error_offset = r.error_offset;
+        if (error_field != NULL) *error_field = r.error_field;
+        *c = pg_command_init(PG_CMD_NONE);
+        return PG_ERR_INVALID_ARGUMENT;
+    }
+    if (consumed != NULL) *consumed = r.pos;
+    return PG_OK;
+}
+
+/* ---- queue ------------------------------------------------------------------------------ */
+void pg_command_queue_init(pg_command_queue *q, pg_command *commands, uint64_t *frames, uint32_t capacity)
+{
+    if (q == NULL) return;
+    q->commands = commands;
+    q->frames = frames;
+    q->capacity = (commands != NULL && frames != NULL) ? capacity : 0;
+    q->count = 0;
+}
+
+pg_result pg_command_queue_push(pg_command_queue *q, const pg_world *world, uint64_t frame, const pg_command *command)
+{
+    uint32_t i;
+    if (q == NULL || world == NULL || command == NULL) return PG_ERR_NULL;
+    if (frame < pg_world_frame(world)) return PG_ERR_INVALID_ARGUMENT;
+    if (q->count >= q->capacity) return PG_ERR_CAPACITY;
+    /* insert after every command of the same or an earlier frame: stable by frame */
+    i = q->count;
+    while (i > 0 && q->frames[i - 1u] > frame) {
+        q->frames[i] = q->frames[i - 1u];
+        q->commands[i] = q->commands[i - 1u];
+        --i;
+    }
+    q->frames[i] = frame;
+    q->commands[i] = *command;
+    q->count += 1u;
+    return PG_OK;
+}
+
+uint32_t pg_command_queue_apply_due(pg_command_queue *q, pg_world *world, uint32_t *failures)
+{
+    uint32_t applied = 0, failed = 0, i, rest;
+    uint64_t now;
+    if (failures != NULL) *failures = 0;
+    if (q == NULL || world == NULL) return 0;
+    now = pg_world_frame(world);
+    while (applied < q->count && q->frames[applied] <= now) {
+        if (pg_command_apply(world, &q->commands[applied], NULL) != PG_OK) ++failed;
+        ++applied;
+    }
+    for (i = 0, rest = q->count - applied; i < rest; ++i) {
+        q->frames[i] = q->frames[i + applied];
+        q->commands[i] = q->commands[i + applied];
+    }
+    q->count -= applied;
+    if (failures != NULL) *failures = failed;
+    return applied;
+}

@@ -1,0 +1,674 @@
+/* state.c — the canonical encoding of a world's state: hashes, snapshots, diffs.
+ *
+ * One encoder serves all three: it walks the state in a fixed order and emits
+ * little-endian fixed-width fields, either into a buffer (snapshot), into a running
+ * FNV-1a hash per section (hashes) or nowhere (sizing). Restoring parses the same
+ * layout twice: once to validate everything, then to write the world, so a corrupt
+ * snapshot changes nothing.
+ *
+ * Layout (docs/formats.md, "Snapshots"):
+ *   "PGSN" u16 version u32 max_bodies u32 max_shapes u32 max_contacts
+ *   then for each section s in order: u8 s, u32 byte length, the section's bytes.
+ * Derived data is not stored: a body's origin and rotation come from its centre and
+ * angle, a shape's collision form from its geometry, every cached world geometry is
+ * recomputed at the next step.
+ */
+#include "pogon/replay.h"
+#include "world_internal.h"
+
+#define SNAPSHOT_MAGIC 0x4E534750u /* "PGSN" */
+#define SNAPSHOT_VERSION 1u
+
+static const char *const section_names[PG_SECTION_COUNT] = {"settings", "bodies", "shapes", "contacts", "broadphase", "joints"};
+
+const char *pg_section_name(pg_section s) { return (unsigned)s < PG_SECTION_COUNT ? section_names[s] : "unknown"; }
+
+uint64_t pg_hash_bytes(uint64_t seed, const void *data, size_t size)
+{
+    const uint8_t *p = (const uint8_t *)data;
+    size_t i;
+    for (i = 0; i < size; ++i) {
+        seed ^= p[i];
+        seed *= UINT64_C(0x100000001b3);
+    }
+    return seed;
+}
+
+/* ---- the encoder -------------------------------------------------------------------- */
+typedef struct sink {
+    uint8_t *buf;     /* NULL: count (and hash) only */
+    size_t cap, len;
+    int overflow;
+    uint64_t hash;    /* FNV-1a of the current section */
+} sink;
+
+static void emit(sink *s, uint32_t byte)
+{
+    uint8_t b = (uint8_t)(byte & 0xFFu);
+    s->hash = (s->hash ^ b) * UINT64_C(0x100000001b3);
+    if (s->buf != NULL) {
+        if (s->len < s->cap) s->buf[s->len] = b;
+        else s->overflow = 1;
+    }
+    s->len += 1u;
+}
+static void emit_u32(sink *s, uint32_t v) { emit(s, v); emit(s, v >> 8); emit(s, v >> 16); emit(s, v >> 24); }
+static void emit_i32(sink *s, int32_t v) { emit_u32(s, (uint32_t)v); }
+static void emit_u64(sink *s, uint64_t v) { emit_u32(s, (uint32_t)(v & 0xFFFFFFFFu)); emit_u32(s, (uint32_t)(v >> 32)); }
+static void emit_i64(sink *s, int64_t v) { emit_u64(s, (uint64_t)v); }
+static void emit_vec(sink *s, pg_vec2 v) { emit_i32(s, v.x); emit_i32(s, v.y); }
+
+/* Optional body fields, present when not at their usual value: a resting body then
+ * costs a few bytes only. */
+enum {
+    B_VELOCITY = 1u << 0, B_ANGULAR = 1u << 1, B_FORCES = 1u << 2, B_DAMPING = 1u << 3, B_GRAVITY_SCALE = 1u << 4,
+    B_USER = 1u << 5, B_SLEEP_TIME = 1u << 6, B_ISLAND = 1u << 7, B_MASS = 1u << 8
+};
+
+static uint32_t body_presence(const pg_body *b)
+{
+    uint32_t m = 0;
+    if (b->v.x != 0 || b->v.y != 0) m |= B_VELOCITY;
+    if (b->w != 0) m |= B_ANGULAR;
+    if (b->force_x != 0 || b->force_y != 0 || b->torque != 0) m |= B_FORCES;
+    if (b->linear_damping != 0 || b->angular_damping != 0) m |= B_DAMPING;
+    if (b->gravity_scale != PG_FIX_ONE) m |= B_GRAVITY_SCALE;
+    if (b->user_data != 0) m |= B_USER;
+    if (b->sleep_time != 0) m |= B_SLEEP_TIME;
+    if (b->island != PG_NULL_INDEX) m |= B_ISLAND;
+    if (b->type == PG_BODY_DYNAMIC) m |= B_MASS;
+    return m;
+}
+
+static void encode_settings(const pg_world *w, sink *s)
+{
+    const pg_world_def *d = &w->def;
+    emit_vec(s, d->gravity);
+    emit_u32(s, d->step_hz);
+    emit_u32(s, d->substeps);
+    emit_u32(s, d->effects);
+    emit_i32(s, d->contact_hertz);
+    emit_i32(s, d->contact_damping_ratio);
+    emit_i32(s, d->contact_push_max);
+    emit_i32(s, d->restitution_threshold);
+    emit_i32(s, d->max_linear_speed);
+    emit_i32(s, d->sleep_linear_tolerance);
+    emit_i32(s, d->sleep_angular_tolerance);
+    emit_i32(s, d->time_to_sleep);
+    emit_u64(s, w->frame);
+}
+
+static void encode_body(const pg_body *b, sink *s)
+{
+    uint32_t m;
+    emit_u32(s, b->generation);
+    emit(s, (b->flags & PG_BODY_FLAG_USED) != 0);
+    if ((b->flags & PG_BODY_FLAG_USED) == 0) return;
+    m = body_presence(b);
+    emit_u32(s, m);
+    emit(s, (uint32_t)b->type);
+    emit(s, b->flags & (PG_BODY_FLAG_AWAKE | PG_BODY_FLAG_FIXED_ROTATION | PG_BODY_FLAG_ALLOW_SLEEP));
+    emit_vec(s, b->center);
+    emit_u32(s, b->angle);
+    emit_u32(s, b->first_shape);
+    emit_u32(s, b->shape_count);
+    if (m & B_VELOCITY) emit_vec(s, b->v);
+    if (m & B_ANGULAR) emit_i32(s, b->w);
+    if (m & B_FORCES) { emit_i64(s, b->force_x); emit_i64(s, b->force_y); emit_i64(s, b->torque); }
+    if (m & B_DAMPING) { emit_i32(s, b->linear_damping); emit_i32(s, b->angular_damping); }
+    if (m & B_GRAVITY_SCALE) emit_i32(s, b->gravity_scale);
+    if (m & B_USER) emit_u64(s, b->user_data);
+    if (m & B_SLEEP_TIME) emit_i32(s, b->sleep_time);
+    if (m & B_ISLAND) emit_u32(s, b->island);
+    if (m & B_MASS) {
+        /* stored rather than recomputed: mass properties take microseconds per shape,
+         * and rollback restores often */
+        emit_vec(s, b->local_center);
+        emit_i64(s, b->mass);
+        emit_i64(s, b->inertia);
+        emit_i64(s, b->inv_mass);
+        emit_i64(s, b->inv_inertia);
+    }
+}
+
+static void encode_shape(const pg_shape *sh, sink *s)
+{
+    int32_t i;
+    emit_u32(s, sh->generation);
+    emit(s, sh->used != 0);
+    if (!sh->used) return;
+    emit_u32(s, sh->body);
+    emit_u32(s, sh->next);
+    emit(s, (uint32_t)sh->geometry.kind);
+    emit(s, (uint32_t)sh->geometry.count);
+    for (i = 0; i < sh->geometry.count; ++i) emit_vec(s, sh->geometry.vertices[i]);
+    emit_i32(s, sh->geometry.radius);
+    emit_i32(s, sh->density);
+    emit_i32(s, sh->friction);
+    emit_i32(s, sh->restitution);
+    emit_u32(s, sh->category);
+    emit_u32(s, sh->mask);
+}
+
+static void encode_contact(const pg_contact *c, sink *s)
+{
+    int32_t k;
+    emit_u32(s, c->shape_a);
+    emit_u32(s, c->shape_b);
+    emit_u32(s, c->body_a);
+    emit_u32(s, c->body_b);
+    emit_i32(s, c->normal.x);
+    emit_i32(s, c->normal.y);
+    emit_i32(s, c->friction);
+    emit_i32(s, c->restitution);
+    emit(s, (uint32_t)c->point_count);
+    for (k = 0; k < c->point_count; ++k) {
+        const pg_contact_point *p = &c->points[k];
+        emit_vec(s, p->point);
+        emit_i32(s, p->separation);
+        emit_u32(s, p->id);
+        emit_i32(s, p->normal_impulse);
+        emit_i32(s, p->tangent_impulse);
+        emit_i32(s, p->max_normal_impulse);
+    }
+}
+
+/* The broadphase keeps no state between steps: the grid is rebuilt from the bodies
+ * and its order is a pure function of them. What persists and decides which pairs are
+ * looked for is which proxies move: this section hashes that, per used shape. */
+static void encode_broadphase(const pg_world *w, sink *s)
+{
+    uint32_t i;
+    for (i = 0; i < w->shape_high; ++i) {
+        const pg_shape *sh = &w->shapes[i];
+        if (!sh->used) continue;
+        emit_u32(s, i);
+        emit(s, (uint32_t)pg__body_is_active(&w->bodies[sh->body]));
+    }
+}
+
+static void encode_section(const pg_world *w, pg_section section, sink *s)
+{
+    uint32_t i;
+    switch (section) {
+    case PG_SECTION_SETTINGS: encode_settings(w, s); break;
+    case PG_SECTION_BODIES:
+        emit_u32(s, w->body_high);
+        for (i = 0; i < w->body_high; ++i) encode_body(&w->bodies[i], s);
+        break;
+    case PG_SECTION_SHAPES:
+        emit_u32(s, w->shape_high);
+        for (i = 0; i < w->shape_high; ++i) encode_shape(&w->shapes[i], s);
+        break;
+    case PG_SECTION_CONTACTS:
+        emit_u32(s, w->contact_count);
+        for (i = 0; i < w->contact_count; ++i) encode_contact(&w->contacts[i], s);
+        break;
+    case PG_SECTION_BROADPHASE: encode_broadphase(w, s); break;
+    default: break; /* joints: none yet */
+    }
+}
+
+void pg_world_section_hashes(const pg_world *world, uint64_t out[PG_SECTION_COUNT])
+{
+    int k;
+    for (k = 0; k < PG_SECTION_COUNT; ++k) {
+        sink s;
+        s.buf = NULL;
+        s.cap = s.len = 0;
+        s.overflow = 0;
+        s.hash = PG_HASH_SEED;
+        if (world != NULL) encode_section(world, (pg_section)k, &s);
+        out[k] = s.hash;
+    }
+}
+
+uint64_t pg_world_hash(const pg_world *world)
+{
+    uint64_t sections[PG_SECTION_COUNT], h = PG_HASH_SEED;
+    uint8_t bytes[8];
+    int k, i;
+    pg_world_section_hashes(world, sections);
+    for (k = 0; k < PG_SECTION_COUNT; ++k) { /* hash of the section hashes, little-endian */
+        for (i = 0; i < 8; ++i) bytes[i] = (uint8_t)((sections[k] >> (8 * i)) & 0xFFu);
+        h = pg_hash_bytes(h, bytes, 8);
+    }
+    return h;
+}
+
+static void encode_all(const pg_world *w, sink *s)
+{
+    int k;
+    emit_u32(s, SNAPSHOT_MAGIC);
+    emit(s, SNAPSHOT_VERSION);
+    emit(s, SNAPSHOT_VERSION >> 8);
+    emit_u32(s, w->def.max_bodies);
+    emit_u32(s, w->def.max_shapes);
+    emit_u32(s, w->def.max_contacts);
+    for (k = 0; k < PG_SECTION_COUNT; ++k) {
+        size_t length_at, start, length, i;
+        emit(s, (uint32_t)k);
+        length_at = s->len;
+        emit_u32(s, 0); /* patched below */
+        start = s->len;
+        encode_section(w, (pg_section)k, s);
+        length = s->len - start;
+        if (s->buf != NULL && !s->overflow)
+            for (i = 0; i < 4; ++i) s->buf[length_at + i] = (uint8_t)((length >> (8 * i)) & 0xFFu);
+    }
+}
+
+size_t pg_world_snapshot_size(const pg_world *world)
+{
+    sink s;
+    if (world == NULL) return 0;
+    s.buf = NULL;
+    s.cap = s.len = 0;
+    s.overflow = 0;
+    s.hash = PG_HASH_SEED;
+    encode_all(world, &s);
+    return s.len;
+}
+
+pg_result pg_world_snapshot_save(const pg_world *world, void *buffer, size_t capacity, size_t *written)
+{
+    sink s;
+    if (written != NULL) *written = 0;
+    if (world == NULL || buffer == NULL) return PG_ERR_NULL;
+    s.buf = (uint8_t *)buffer;
+    s.cap = capacity;
+    s.len = 0;
+    s.overflow = 0;
+    s.hash = PG_HASH_SEED;
+    encode_all(world, &s);
+    if (s.overflow) return pg__fail(world, PG_ERR_MEMORY, "snapshot buffer too small: size it with pg_world_snapshot_size");
+    if (written != NULL) *written = s.len;
+    return PG_OK;
+}
+
+/* ---- the decoder ------------------------------------------------------------------------ */
+typedef struct source {
+    const uint8_t *p;
+    size_t size, pos;
+    const char *error_field;
+    size_t error_offset;
+} source;
+
+static int src_need(source *r, size_t n, const char *field)
+{
+    if (r->error_field != NULL) return 0;
+    if (r->size - r->pos < n) {
+        r->error_field = field;
+        r->error_offset = r->pos;
+        return 0;
+    }
+    return 1;
+}
+static uint32_t take(source *r, const char *field) { return src_need(r, 1, field) ? r->p[r->pos++] : 0u; }
+static uint32_t take_u32(source *r, const char *field)
+{
+    uint32_t v;
+    if (!src_need(r, 4, field)) return 0;
+    v = (uint32_t)r->p[r->pos] | (uint32_t)r->p[r->pos + 1] << 8 | (uint32_t)r->p[r->pos + 2] << 16 | (uint32_t)r->p[r->pos + 3] << 24;
+    r->pos += 4;
+    return v;
+}
+static int32_t as_i32(uint32_t u) { return u <= (uint32_t)INT32_MAX ? (int32_t)u : -(int32_t)(~u) - 1; }
+static int64_t as_i64(uint64_t u) { return u <= (uint64_t)INT64_MAX ? (int64_t)u : -(int64_t)(~u) - 1; }
+static int32_t take_i32(source *r, const char *field) { return as_i32(take_u32(r, field)); }
+static uint64_t take_u64(source *r, const char *field)
+{
+    uint64_t lo = take_u32(r, field);
+    return lo | (uint64_t)take_u32(r, field) << 32;
+}
+static int64_t take_i64(source *r, const char *field) { return as_i64(take_u64(r, field)); }
+static pg_vec2 take_vec(source *r, const char *field)
+{
+    pg_vec2 v;
+    v.x = take_i32(r, field);
+    v.y = take_i32(r, field);
+    return v;
+}
+static void invalid(source *r, size_t at, const char *field)
+{
+    if (r->error_field == NULL) {
+        r->error_field = field;
+        r->error_offset = at;
+    }
+}
+
+/* Parse (and with `w` non-NULL, apply) one snapshot. Applying assumes a validated input. */
+static void decode(source *r, pg_world *w, const pg_world_def *caps)
+{
+    int k;
+    uint32_t i, n;
+    size_t at;
+    if (take_u32(r, "magic") != SNAPSHOT_MAGIC) invalid(r, 0, "magic");
+    at = r->pos;
+    if ((take(r, "version") | take(r, "version") << 8) != SNAPSHOT_VERSION) invalid(r, at, "version");
+    at = r->pos;
+    if (take_u32(r, "max_bodies") != caps->max_bodies) invalid(r, at, "max_bodies (must equal the world's)");
+    at = r->pos;
+    if (take_u32(r, "max_shapes") != caps->max_shapes) invalid(r, at, "max_shapes (must equal the world's)");
+    at = r->pos;
+    if (take_u32(r, "max_contacts") != caps->max_contacts) invalid(r, at, "max_contacts (must equal the world's)");
+    for (k = 0; k < PG_SECTION_COUNT && r->error_field == NULL; ++k) {
+        size_t length, start;
+        at = r->pos;
+        if (take(r, "section id") != (uint32_t)k) invalid(r, at, "section id");
+        length = take_u32(r, "section length");
+        start = r->pos;
+        if (r->error_field == NULL && length > r->size - r->pos) invalid(r, start - 4u, "section length");
+        if (k == PG_SECTION_SETTINGS) {
+            pg_world_def d = *caps;
+            uint64_t frame;
+            d.gravity = take_vec(r, "settings.gravity");
+            d.step_hz = take_u32(r, "settings.step_hz");
+            d.substeps = take_u32(r, "settings.substeps");
+            d.effects = take_u32(r, "settings.effects");
+            d.contact_hertz = take_i32(r, "settings.contact_hertz");
+            d.contact_damping_ratio = take_i32(r, "settings.contact_damping_ratio");
+            d.contact_push_max = take_i32(r, "settings.contact_push_max");
+            d.restitution_threshold = take_i32(r, "settings.restitution_threshold");
+            d.max_linear_speed = take_i32(r, "settings.max_linear_speed");
+            d.sleep_linear_tolerance = take_i32(r, "settings.sleep_linear_tolerance");
+            d.sleep_angular_tolerance = take_i32(r, "settings.sleep_angular_tolerance");
+            d.time_to_sleep = take_i32(r, "settings.time_to_sleep");
+            frame = take_u64(r, "settings.frame");
+            if (r->error_field == NULL && pg_world_memory_size(&d) == 0) invalid(r, start, "settings (a value is out of range)");
+            if (w != NULL) {
+                w->def = d;
+                w->frame = frame;
+            }
+        } else if (k == PG_SECTION_BODIES) {
+            at = r->pos;
+            n = take_u32(r, "bodies.count");
+            if (n > caps->max_bodies) invalid(r, at, "bodies.count");
+            for (i = 0; i < n && r->error_field == NULL; ++i) {
+                pg_body b;
+                uint32_t used, m, flags;
+                unsigned char *p = (unsigned char *)&b;
+                size_t z;
+                for (z = 0; z < sizeof b; ++z) p[z] = 0;
+                b.generation = take_u32(r, "body.generation");
+                at = r->pos;
+                used = take(r, "body.used");
+                if (used > 1u) invalid(r, at, "body.used");
+                b.first_shape = PG_NULL_INDEX;
+                b.island = PG_NULL_INDEX;
+                b.gravity_scale = PG_FIX_ONE;
+                if (used) {
+                    at = r->pos;
+                    m = take_u32(r, "body.presence");
+                    if (m >= (B_MASS << 1)) invalid(r, at, "body.presence");
+                    at = r->pos;
+                    b.type = (pg_body_type)take(r, "body.type");
+                    if ((unsigned)b.type > (unsigned)PG_BODY_DYNAMIC) invalid(r, at, "body.type");
+                    if (r->error_field == NULL && ((m & B_MASS) != 0) != (b.type == PG_BODY_DYNAMIC)) invalid(r, at, "body.type (mass data)");
+                    at = r->pos;
+                    flags = take(r, "body.flags");
+                    if ((flags & ~(uint32_t)(PG_BODY_FLAG_AWAKE | PG_BODY_FLAG_FIXED_ROTATION | PG_BODY_FLAG_ALLOW_SLEEP)) != 0) invalid(r, at, "body.flags");
+                    b.flags = flags | PG_BODY_FLAG_USED | PG_BODY_FLAG_GEOMETRY_DIRTY;
+                    b.center = take_vec(r, "body.center");
+                    b.angle = take_u32(r, "body.angle");
+                    at = r->pos;
+                    b.first_shape = take_u32(r, "body.first_shape");
+                    if (b.first_shape != PG_NULL_INDEX && b.first_shape >= caps->max_shapes) invalid(r, at, "body.first_shape");
+                    b.shape_count = take_u32(r, "body.shape_count");
+                    if (m & B_VELOCITY) b.v = take_vec(r, "body.velocity");
+                    if (m & B_ANGULAR) b.w = take_i32(r, "body.angular_velocity");
+                    if (m & B_FORCES) {
+                        b.force_x = take_i64(r, "body.force");
+                        b.force_y = take_i64(r, "body.force");
+                        b.torque = take_i64(r, "body.torque");
+                    }
+                    if (m & B_DAMPING) {
+                        b.linear_damping = take_i32(r, "body.linear_damping");
+                        b.angular_damping = take_i32(r, "body.angular_damping");
+                    }
+                    if (m & B_GRAVITY_SCALE) b.gravity_scale = take_i32(r, "body.gravity_scale");
+                    if (m & B_USER) b.user_data = take_u64(r, "body.user_data");
+                    if (m & B_SLEEP_TIME) b.sleep_time = take_i32(r, "body.sleep_time");
+                    if (m & B_ISLAND) {
+                        at = r->pos;
+                        b.island = take_u32(r, "body.island");
+                        if (b.island >= caps->max_bodies) invalid(r, at, "body.island");
+                    }
+                    if (m & B_MASS) {
+                        b.local_center = take_vec(r, "body.local_center");
+                        b.mass = take_i64(r, "body.mass");
+                        b.inertia = take_i64(r, "body.inertia");
+                        b.inv_mass = take_i64(r, "body.inv_mass");
+                        b.inv_inertia = take_i64(r, "body.inv_inertia");
+                    }
+                    b.rot = pg_rot_from_angle(b.angle);
+                    b.origin = pg_v2_sub(b.center, pg_rot_apply(b.rot, b.local_center));
+                }
+                if (w != NULL) w->bodies[i] = b;
+            }
+            if (w != NULL) {
+                for (i = n; i < w->def.max_bodies; ++i) { /* slots never used */
+                    w->bodies[i].flags = 0;
+                    w->bodies[i].generation = 0;
+                }
+                w->body_high = n;
+            }
+        } else if (k == PG_SECTION_SHAPES) {
+            at = r->pos;
+            n = take_u32(r, "shapes.count");
+            if (n > caps->max_shapes) invalid(r, at, "shapes.count");
+            for (i = 0; i < n && r->error_field == NULL; ++i) {
+                pg_shape sh;
+                uint32_t used;
+                int32_t v;
+                unsigned char *p = (unsigned char *)&sh;
+                size_t z;
+                for (z = 0; z < sizeof sh; ++z) p[z] = 0;
+                sh.generation = take_u32(r, "shape.generation");
+                at = r->pos;
+                used = take(r, "shape.used");
+                if (used > 1u) invalid(r, at, "shape.used");
+                sh.used = used;
+                sh.next = PG_NULL_INDEX;
+                if (used) {
+                    at = r->pos;
+                    sh.body = take_u32(r, "shape.body");
+                    if (sh.body >= caps->max_bodies) invalid(r, at, "shape.body");
+                    at = r->pos;
+                    sh.next = take_u32(r, "shape.next");
+                    if (sh.next != PG_NULL_INDEX && sh.next >= caps->max_shapes) invalid(r, at, "shape.next");
+                    at = r->pos;
+                    sh.geometry.kind = (pg_shape_kind)take(r, "shape.kind");
+                    if ((unsigned)sh.geometry.kind > (unsigned)PG_SHAPE_POLYGON) invalid(r, at, "shape.kind");
+                    at = r->pos;
+                    sh.geometry.count = (int32_t)take(r, "shape.vertex_count");
+                    if (sh.geometry.count < 1 || sh.geometry.count > PG_MAX_VERTICES) invalid(r, at, "shape.vertex_count");
+                    for (v = 0; v < sh.geometry.count && r->error_field == NULL; ++v) sh.geometry.vertices[v] = take_vec(r, "shape.vertex");
+                    sh.geometry.radius = take_i32(r, "shape.radius");
+                    sh.density = take_i32(r, "shape.density");
+                    sh.friction = take_i32(r, "shape.friction");
+                    sh.restitution = take_i32(r, "shape.restitution");
+                    sh.category = take_u32(r, "shape.category");
+                    sh.mask = take_u32(r, "shape.mask");
+                    if (w != NULL) pg__shape_build_local(&sh.geometry, &sh.local);
+                }
+                if (w != NULL) w->shapes[i] = sh;
+            }
+            if (w != NULL) {
+                uint32_t count = 0;
+                for (i = n; i < w->def.max_shapes; ++i) {
+                    w->shapes[i].used = 0;
+                    w->shapes[i].generation = 0;
+                }
+                w->shape_high = n;
+                for (i = 0; i < n; ++i) count += w->shapes[i].used ? 1u : 0u;
+                w->shape_count = count;
+            }
+        } else if (k == PG_SECTION_CONTACTS) {
+            at = r->pos;
+            n = take_u32(r, "contacts.count");
+            if (n > caps->max_contacts) invalid(r, at, "contacts.count");
+            for (i = 0; i < n && r->error_field == NULL; ++i) {
+                pg_contact c;
+                int32_t q;
+                unsigned char *p = (unsigned char *)&c;
+                size_t z;
+                for (z = 0; z < sizeof c; ++z) p[z] = 0;
+                at = r->pos;
+                c.shape_a = take_u32(r, "contact.shape_a");
+                c.shape_b = take_u32(r, "contact.shape_b");
+                if (c.shape_a >= caps->max_shapes || c.shape_b >= caps->max_shapes || c.shape_a >= c.shape_b) invalid(r, at, "contact.shapes");
+                at = r->pos;
+                c.body_a = take_u32(r, "contact.body_a");
+                c.body_b = take_u32(r, "contact.body_b");
+                if (c.body_a >= caps->max_bodies || c.body_b >= caps->max_bodies) invalid(r, at, "contact.bodies");
+                c.normal.x = take_i32(r, "contact.normal");
+                c.normal.y = take_i32(r, "contact.normal");
+                c.friction = take_i32(r, "contact.friction");
+                c.restitution = take_i32(r, "contact.restitution");
+                at = r->pos;
+                c.point_count = (int32_t)take(r, "contact.point_count");
+                if (c.point_count > 2) invalid(r, at, "contact.point_count");
+                for (q = 0; q < c.point_count && r->error_field == NULL; ++q) {
+                    pg_contact_point *cp = &c.points[q];
+                    cp->point = take_vec(r, "contact.point");
+                    cp->separation = take_i32(r, "contact.separation");
+                    cp->id = take_u32(r, "contact.id");
+                    cp->normal_impulse = take_i32(r, "contact.normal_impulse");
+                    cp->tangent_impulse = take_i32(r, "contact.tangent_impulse");
+                    cp->max_normal_impulse = take_i32(r, "contact.max_normal_impulse");
+                }
+                if (w != NULL) w->contacts[i] = c;
+            }
+            if (w != NULL) w->contact_count = n;
+        } else {
+            r->pos = r->error_field == NULL ? start + length : r->pos; /* derived or empty: skip */
+        }
+        if (r->error_field == NULL && r->pos != start + length) invalid(r, start - 4u, "section length");
+    }
+    if (r->error_field == NULL && r->pos != r->size) invalid(r, r->pos, "trailing bytes");
+}
+
+pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_t size)
+{
+    source r;
+    uint32_t i, bodies = 0;
+    if (world == NULL || snapshot == NULL) return PG_ERR_NULL;
+    r.p = (const uint8_t *)snapshot;
+    r.size = size;
+    r.pos = 0;
+    r.error_field = NULL;
+    r.error_offset = 0;
+    decode(&r, NULL, &world->def); /* validate everything first */
+    if (r.error_field != NULL) {
+        char detail[96], num[24];
+        size_t pos = 0, k = 0, off = r.error_offset;
+        const char *t = "corrupt snapshot at offset ";
+        do { num[k++] = (char)('0' + (int)(off % 10u)); off /= 10u; } while (off != 0 && k < sizeof num);
+        while (*t != '\0' && pos + 1 < sizeof detail) detail[pos++] = *t++;
+        while (k > 0 && pos + 1 < sizeof detail) detail[pos++] = num[--k];
+        t = ", field ";
+        while (*t != '\0' && pos + 1 < sizeof detail) detail[pos++] = *t++;
+        t = r.error_field;
+        while (*t != '\0' && pos + 1 < sizeof detail) detail[pos++] = *t++;
+        detail[pos] = '\0';
+        return pg__fail(world, PG_ERR_INVALID_ARGUMENT, detail);
+    }
+    r.pos = 0;
+    decode(&r, world, &world->def);
+    for (i = 0; i < world->body_high; ++i) bodies += (world->bodies[i].flags & PG_BODY_FLAG_USED) != 0;
+    world->body_count = bodies;
+    world->begin_count = 0;
+    world->end_count = 0;
+    world->last_error[0] = '\0';
+    return PG_OK;
+}
+
+/* ---- diff ---------------------------------------------------------------------------------- */
+/* Section byte ranges of a snapshot (no validation beyond the framing). */
+static int sections_of(const uint8_t *p, size_t size, size_t start[PG_SECTION_COUNT], size_t length[PG_SECTION_COUNT])
+{
+    size_t pos = 18; /* magic, version, three capacities */
+    int k;
+    if (size < pos) return 0;
+    for (k = 0; k < PG_SECTION_COUNT; ++k) {
+        size_t len;
+        if (size - pos < 5 || p[pos] != (uint8_t)k) return 0;
+        len = (size_t)p[pos + 1] | (size_t)p[pos + 2] << 8 | (size_t)p[pos + 3] << 16 | (size_t)p[pos + 4] << 24;
+        pos += 5;
+        if (len > size - pos) return 0;
+        start[k] = pos;
+        length[k] = len;
+        pos += len;
+    }
+    return 1;
+}
+
+/* Length of the record at p (a body, shape or contact encoding), or 0 if malformed. */
+static size_t record_length(pg_section section, const uint8_t *p, size_t avail)
+{
+    size_t n = 0;
+    if (section == PG_SECTION_BODIES) {
+        uint32_t m;
+        if (avail < 5) return 0;
+        if (p[4] == 0) return 5;
+        if (avail < 9) return 0;
+        m = (uint32_t)p[5] | (uint32_t)p[6] << 8 | (uint32_t)p[7] << 16 | (uint32_t)p[8] << 24;
+        n = 9 + 2 + 8 + 4 + 4 + 4;
+        if (m & B_VELOCITY) n += 8;
+        if (m & B_ANGULAR) n += 4;
+        if (m & B_FORCES) n += 24;
+        if (m & B_DAMPING) n += 8;
+        if (m & B_GRAVITY_SCALE) n += 4;
+        if (m & B_USER) n += 8;
+        if (m & B_SLEEP_TIME) n += 4;
+        if (m & B_ISLAND) n += 4;
+        if (m & B_MASS) n += 40;
+    } else if (section == PG_SECTION_SHAPES) {
+        if (avail < 5) return 0;
+        if (p[4] == 0) return 5;
+        if (avail < 15) return 0;
+        n = 5 + 8 + 2 + (size_t)p[14] * 8u + 4 + 12 + 8;
+    } else if (section == PG_SECTION_CONTACTS) {
+        if (avail < 33) return 0;
+        n = 33 + (size_t)p[32] * 28u;
+    }
+    return n <= avail ? n : 0;
+}
+
+static int bytes_equal(const uint8_t *a, const uint8_t *b, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; ++i)
+        if (a[i] != b[i]) return 0;
+    return 1;
+}
+
+int pg_world_diff_snapshots(const void *a, size_t a_size, const void *b, size_t b_size, pg_divergence *out)
+{
+    const uint8_t *pa = (const uint8_t *)a, *pb = (const uint8_t *)b;
+    size_t sa[PG_SECTION_COUNT], la[PG_SECTION_COUNT], sb[PG_SECTION_COUNT], lb[PG_SECTION_COUNT];
+    int k;
+    if (out != NULL) out->section = PG_SECTION_SETTINGS, out->index = -1;
+    if (a == NULL || b == NULL) return 1;
+    if (a_size == b_size && bytes_equal(pa, pb, a_size)) return 0;
+    if (!sections_of(pa, a_size, sa, la) || !sections_of(pb, b_size, sb, lb)) return 1;
+    for (k = 0; k < PG_SECTION_COUNT; ++k) {
+        size_t ia, ib;
+        int64_t index = 0;
+        if (la[k] == lb[k] && bytes_equal(pa + sa[k], pb + sb[k], la[k])) continue;
+        if (out != NULL) out->section = (pg_section)k;
+        if (k != PG_SECTION_BODIES && k != PG_SECTION_SHAPES && k != PG_SECTION_CONTACTS) return 1;
+        /* walk the records in step: the first that differs names the object */
+        for (ia = sa[k] + 4, ib = sb[k] + 4;; ++index) {
+            size_t ra = ia < sa[k] + la[k] ? record_length((pg_section)k, pa + ia, sa[k] + la[k] - ia) : 0;
+            size_t rb = ib < sb[k] + lb[k] ? record_length((pg_section)k, pb + ib, sb[k] + lb[k] - ib) : 0;
+            if (ra == 0 || rb == 0 || ra != rb || !bytes_equal(pa + ia, pb + ib, ra)) break;
+            ia += ra;
+            ib += rb;
+        }
+        if (out != NULL) out->index = index;
+        return 1;
+    }
+    return 1; /* the header differs */
+}
