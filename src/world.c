@@ -264,8 +264,11 @@ pg_result pg_world_set_effects(pg_world *world, uint32_t effects)
     if ((effects & ~PG_EFFECTS_ALL) != 0) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "effects has bits that are not PG_EFFECT_*");
     if ((world->def.effects & PG_EFFECT_SLEEPING) != 0 && (effects & PG_EFFECT_SLEEPING) == 0) {
         for (i = 0; i < world->body_high; ++i) /* without sleeping, nothing may stay asleep */
-            if ((world->bodies[i].flags & PG_BODY_FLAG_USED) != 0 && world->bodies[i].type != PG_BODY_STATIC)
-                world->bodies[i].flags |= PG_BODY_FLAG_AWAKE, world->bodies[i].sleep_time = 0;
+            if ((world->bodies[i].flags & PG_BODY_FLAG_USED) != 0 && world->bodies[i].type != PG_BODY_STATIC) {
+                world->bodies[i].flags |= PG_BODY_FLAG_AWAKE;
+                world->bodies[i].sleep_time = 0;
+                world->bodies[i].island = PG_NULL_INDEX;
+            }
     }
     world->def.effects = effects;
     return PG_OK;
