@@ -184,23 +184,53 @@ typedef struct step_context {
     uint32_t effects;
 } step_context;
 
-/* Velocity change of one row. Products are int64 (|lambda| < 2^31, coefficients
- * < 2^31) and every sum is clamped back into the pg_fix range, so nothing can wrap. */
-static inline void apply_row(solver_body *A, solver_body *B, int64_t lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y, int32_t gA, int32_t gB)
+/* ---- the row kernel ------------------------------------------------------------------
+ * A constraint loads its two bodies' velocities into int64 locals, solves its rows
+ * without intermediate saturation, and clamps once when it stores them. That is safe
+ * because every quantity is bounded:
+ *   accumulated lambdas are kept within +-LAMBDA_MAX = 2^27 (2048 m/s of velocity change,
+ *   far beyond anything the envelope produces), so one row changes a linear velocity
+ *   by at most 2^28 (|k n| <= 1) and an angular one by 2^28 * 2^7 (|g| < 128 / m);
+ *   stored velocities are within +-VELOCITY_MAX = 2^29 (8192 m/s, rad/s), so after the
+ *   at most 4 rows of a constraint |v| < 2^31 and every product below fits in int64
+ *   (d . dv < 2^30 * 2^32, w (r x d) < 2^38 * 2^23). */
+#define LAMBDA_MAX (INT64_C(1) << 27)
+#define VELOCITY_MAX (INT64_C(1) << 29)
+
+typedef struct velocity { int64_t x, y, w; } velocity;
+
+static inline velocity load_velocity(const solver_body *b)
 {
-    A->v.x = pg__sat64((int64_t)A->v.x - pg__round_shift64(lambda * lA_x, 30));
-    A->v.y = pg__sat64((int64_t)A->v.y - pg__round_shift64(lambda * lA_y, 30));
-    A->w = pg__sat64((int64_t)A->w - pg__round_shift64(lambda * gA, 24));
-    B->v.x = pg__sat64((int64_t)B->v.x + pg__round_shift64(lambda * lB_x, 30));
-    B->v.y = pg__sat64((int64_t)B->v.y + pg__round_shift64(lambda * lB_y, 30));
-    B->w = pg__sat64((int64_t)B->w + pg__round_shift64(lambda * gB, 24));
+    velocity v;
+    v.x = b->v.x;
+    v.y = b->v.y;
+    v.w = b->w;
+    return v;
 }
 
-/* Relative velocity of B's anchor against A's along direction d (cA, cB: r x d), int64. */
-static inline int64_t relative_speed(const solver_body *A, const solver_body *B, pg_dir d, pg_fix cA, pg_fix cB)
+static inline pg_fix clamp_velocity(int64_t v) { return (pg_fix)(v > VELOCITY_MAX ? VELOCITY_MAX : v < -VELOCITY_MAX ? -VELOCITY_MAX : v); }
+
+static inline void store_velocity(solver_body *b, const velocity *v)
 {
-    int64_t dvx = (int64_t)B->v.x - A->v.x, dvy = (int64_t)B->v.y - A->v.y; /* < 2^32 */
-    return pg__round_shift64(d.x * dvx + d.y * dvy, 30) + pg__round_shift64((int64_t)B->w * cB - (int64_t)A->w * cA, 16);
+    b->v.x = clamp_velocity(v->x);
+    b->v.y = clamp_velocity(v->y);
+    b->w = clamp_velocity(v->w);
+}
+
+static inline void apply_row(velocity *A, velocity *B, int64_t lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y, int32_t gA, int32_t gB)
+{
+    A->x -= pg__round_shift64(lambda * lA_x, 30);
+    A->y -= pg__round_shift64(lambda * lA_y, 30);
+    A->w -= pg__round_shift64(lambda * gA, 24);
+    B->x += pg__round_shift64(lambda * lB_x, 30);
+    B->y += pg__round_shift64(lambda * lB_y, 30);
+    B->w += pg__round_shift64(lambda * gB, 24);
+}
+
+/* Relative velocity of B's anchor against A's along direction d (cA, cB: r x d). */
+static inline int64_t relative_speed(const velocity *A, const velocity *B, pg_dir d, pg_fix cA, pg_fix cB)
+{
+    return pg__round_shift64(d.x * (B->x - A->x) + d.y * (B->y - A->y), 30) + pg__round_shift64(B->w * cB - A->w * cA, 16);
 }
 
 /* Where anchor r of a body is now, relative to the body's centre at the step's start:
@@ -211,9 +241,12 @@ static inline void anchor_now(const solver_body *b, pg_vec2 r, int64_t *x, int64
     *y = (int64_t)b->c.y - b->c0.y + pg__round_shift64((int64_t)b->dq.s * r.x + (int64_t)b->dq.c * r.y, 30);
 }
 
+static inline int64_t clamp_lambda(int64_t acc, int64_t lo, int64_t hi) { return acc < lo ? lo : acc > hi ? hi : acc; }
+
 static void solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
+    velocity va = load_velocity(A), vb = load_velocity(B);
     const softness *soft = c->soft_static ? &ctx->soft_static : &ctx->soft;
     const pg_dir n = c->n;
     pg_dir t;
@@ -224,18 +257,17 @@ static void solve_constraint(const step_context *ctx, constraint *c, solver_body
     if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
         for (k = 0; k < c->count; ++k) {
             constraint_point *p = &c->p[order ? c->count - 1 - k : k];
-            int64_t vt = relative_speed(A, B, t, p->ctA, p->ctB);
             int64_t max_f = pg__round_shift64((int64_t)p->friction_ratio * p->normal_impulse, 16);
-            int64_t acc = (int64_t)p->tangent_impulse - vt;
-            acc = acc < -max_f ? -max_f : acc > max_f ? max_f : acc;
-            acc = pg__sat64(acc);
-            apply_row(A, B, acc - p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+            int64_t acc;
+            if (max_f > LAMBDA_MAX) max_f = LAMBDA_MAX;
+            acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(&va, &vb, t, p->ctA, p->ctB), -max_f, max_f);
+            apply_row(&va, &vb, acc - p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
             p->tangent_impulse = (pg_fix)acc;
         }
     }
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[order ? c->count - 1 - k : k];
-        int64_t ax, ay, bx, by, s, bias = 0, mass_scale = PG_ROT_ONE, impulse_scale = 0, lambda, acc;
+        int64_t ax, ay, bx, by, s, bias = 0, mass_scale = PG_ROT_ONE, impulse_scale = 0, acc;
         /* current separation from where the anchors are now */
         anchor_now(A, p->rA, &ax, &ay);
         anchor_now(B, p->rB, &bx, &by);
@@ -248,45 +280,48 @@ static void solve_constraint(const step_context *ctx, constraint *c, solver_body
             mass_scale = soft->mass_scale;
             impulse_scale = soft->impulse_scale;
         }
-        lambda = -pg__round_shift64(mass_scale * (relative_speed(A, B, n, p->cnA, p->cnB) + bias), 30) -
-                 pg__round_shift64(impulse_scale * p->normal_impulse, 30);
-        acc = (int64_t)p->normal_impulse + lambda;
-        acc = acc < 0 ? 0 : acc > PG_FIX_MAX ? PG_FIX_MAX : acc;
-        apply_row(A, B, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+        acc = (int64_t)p->normal_impulse - pg__round_shift64(mass_scale * (relative_speed(&va, &vb, n, p->cnA, p->cnB) + bias), 30) -
+              pg__round_shift64(impulse_scale * p->normal_impulse, 30);
+        acc = clamp_lambda(acc, 0, LAMBDA_MAX);
+        apply_row(&va, &vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
         p->normal_impulse = (pg_fix)acc;
         if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
     }
+    store_velocity(A, &va);
+    store_velocity(B, &vb);
 }
 
 static void warm_start(constraint *c, solver_body *bodies)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
+    velocity va = load_velocity(A), vb = load_velocity(B);
     int32_t k;
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
-        apply_row(A, B, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
-        apply_row(A, B, p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+        apply_row(&va, &vb, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+        apply_row(&va, &vb, p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
     }
+    store_velocity(A, &va);
+    store_velocity(B, &vb);
 }
 
-static void restitution(const step_context *ctx, constraint *c, solver_body *bodies, pg_fix threshold)
+static void restitution(constraint *c, solver_body *bodies, pg_fix threshold)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
+    velocity va = load_velocity(A), vb = load_velocity(B);
     int32_t k;
-    (void)ctx;
     if (c->restitution == 0) return;
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
-        int64_t lambda, acc;
+        int64_t acc;
         if (p->relative_velocity > -threshold || p->max_normal_impulse == 0) continue;
-        lambda = -(relative_speed(A, B, c->n, p->cnA, p->cnB) + pg_fix_mul(c->restitution, p->relative_velocity));
-        acc = (int64_t)p->normal_impulse + lambda;
-        if (acc < 0) acc = 0;
-        if (acc > PG_FIX_MAX) acc = PG_FIX_MAX;
-        lambda = acc - p->normal_impulse;
+        acc = (int64_t)p->normal_impulse - (relative_speed(&va, &vb, c->n, p->cnA, p->cnB) + pg_fix_mul(c->restitution, p->relative_velocity));
+        acc = clamp_lambda(acc, 0, LAMBDA_MAX);
+        apply_row(&va, &vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
         p->normal_impulse = (pg_fix)acc;
-        apply_row(A, B, lambda, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
     }
+    store_velocity(A, &va);
+    store_velocity(B, &vb);
 }
 
 void pg__solve(pg_world *w)
@@ -329,8 +364,8 @@ void pg__solve(pg_world *w)
         if (!pg__body_is_active(b)) continue;
         active[n_active++] = i;
         sb = &bodies[i];
-        sb->v = b->v;
-        sb->w = rotation ? b->w : 0;
+        sb->v = pg_v2(clamp_velocity(b->v.x), clamp_velocity(b->v.y)); /* the kernel's bounds */
+        sb->w = rotation ? clamp_velocity(b->w) : 0;
         sb->c0 = sb->c = b->center;
         sb->a0 = sb->a = b->angle;
         sb->dq = pg_rot_identity();
@@ -398,12 +433,12 @@ void pg__solve(pg_world *w)
                 dt = row_coefficients(A, B, p->ctA, p->ctB, t, rotation, &p->ltA_x, &p->ltA_y, &p->ltB_x, &p->ltB_y, &p->gtA, &p->gtB);
                 p->friction_ratio = pg_fix_mul(ct->friction, k_ratio(dt, dn));
             }
-            p->normal_impulse = cp->normal_impulse;
-            p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? cp->tangent_impulse : 0;
+            p->normal_impulse = (pg_fix)clamp_lambda(cp->normal_impulse, 0, LAMBDA_MAX);
+            p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
             p->max_normal_impulse = 0;
             {
-                solver_body *sa = &bodies[c->a], *sbb = &bodies[c->b];
-                p->relative_velocity = pg__sat64(relative_speed(sa, sbb, c->n, p->cnA, p->cnB));
+                velocity va = load_velocity(&bodies[c->a]), vb = load_velocity(&bodies[c->b]);
+                p->relative_velocity = pg__sat64(relative_speed(&va, &vb, c->n, p->cnA, p->cnB));
             }
         }
     }
@@ -446,7 +481,7 @@ void pg__solve(pg_world *w)
         for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, &cons[i], bodies, 0, order);
     }
     if ((effects & PG_EFFECT_RESTITUTION) != 0)
-        for (i = 0; i < n_cons; ++i) restitution(&ctx, &cons[i], bodies, w->def.restitution_threshold);
+        for (i = 0; i < n_cons; ++i) restitution(&cons[i], bodies, w->def.restitution_threshold);
 
     /* store impulses for warm starting next step */
     for (i = 0; i < n_cons; ++i) {
