@@ -84,12 +84,17 @@ static softness make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
     return s;
 }
 
+/* Number of significant bits of v (0 for 0). The builtin and the loop agree exactly. */
 static int bit_length(uint64_t v)
 {
+#if defined(__GNUC__) || defined(__clang__)
+    return v == 0 ? 0 : 64 - __builtin_clzll(v);
+#else
     int n = 0;
     while (v >= 256u) { n += 8; v >>= 8; }
     while (v != 0) { ++n; v >>= 1; }
     return n;
+#endif
 }
 
 /* One denominator, normalised: K scaled by 2^-shift into [2^30, 2^31), and its
