@@ -124,7 +124,12 @@ size_t pg_command_encode(const pg_command *c, uint8_t *buffer, size_t capacity)
     uint32_t f;
     int32_t i;
     if (c == NULL || buffer == NULL || (unsigned)c->kind >= PG_CMD_KIND_COUNT || c->kind == PG_CMD_NONE) return 0;
-    if ((kind_fields[c->kind] & F_GEOMETRY) != 0 && (c->geometry.count < 0 || c->geometry.count > PG_MAX_VERTICES)) return 0;
+    /* refuse what decode would refuse, so every encoding decodes */
+    if ((kind_fields[c->kind] & F_GEOMETRY) != 0 &&
+        (c->geometry.count < 0 || c->geometry.count > PG_MAX_VERTICES || (unsigned)c->geometry.kind > (unsigned)PG_SHAPE_POLYGON))
+        return 0;
+    if ((kind_fields[c->kind] & F_MAKE) != 0 && (unsigned)c->make_kind >= PG_MAKE_KIND_COUNT) return 0;
+    if ((kind_fields[c->kind] & F_BODY_DEF) != 0 && (unsigned)c->body_def.type > (unsigned)PG_BODY_DYNAMIC) return 0;
     w.p = buffer;
     w.cap = capacity;
     w.len = 0;

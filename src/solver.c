@@ -56,6 +56,7 @@ typedef struct constraint {
     pg_dir n;
     int32_t count;
     int32_t soft_static;     /* one side cannot move: stiffer softness */
+    int32_t round_a, round_b;/* a circle: its surface looks the same however it turns */
     pg_fix restitution;
     constraint_point p[2];
 } constraint;
@@ -240,8 +241,13 @@ static inline int64_t relative_speed(const velocity *A, const velocity *B, pg_di
 
 /* Where anchor r of a body is now, relative to the body's centre at the step's start:
  * (c - c0) + R(a - a0) r. Positions are within the envelope, so int64 holds it all. */
-static inline void anchor_now(const solver_body *b, pg_vec2 r, int64_t *x, int64_t *y)
+static inline void anchor_now(const solver_body *b, pg_vec2 r, int round, int64_t *x, int64_t *y)
 {
+    if (round) { /* a circle's surface point along the normal does not turn with it */
+        *x = (int64_t)b->c.x - b->c0.x + r.x;
+        *y = (int64_t)b->c.y - b->c0.y + r.y;
+        return;
+    }
     *x = (int64_t)b->c.x - b->c0.x + pg__round_shift64((int64_t)b->dq.c * r.x - (int64_t)b->dq.s * r.y, 30);
     *y = (int64_t)b->c.y - b->c0.y + pg__round_shift64((int64_t)b->dq.s * r.x + (int64_t)b->dq.c * r.y, 30);
 }
@@ -274,8 +280,8 @@ static void solve_constraint(const step_context *ctx, constraint *c, solver_body
         constraint_point *p = &c->p[order ? c->count - 1 - k : k];
         int64_t ax, ay, bx, by, s, bias = 0, mass_scale = PG_ROT_ONE, impulse_scale = 0, acc;
         /* current separation from where the anchors are now */
-        anchor_now(A, p->rA, &ax, &ay);
-        anchor_now(B, p->rB, &bx, &by);
+        anchor_now(A, p->rA, c->round_a, &ax, &ay);
+        anchor_now(B, p->rB, c->round_b, &bx, &by);
         s = pg__round_shift64(n.x * (bx - ax) + n.y * (by - ay), 30) + p->adjusted_separation;
         if (s > 0) {
             bias = s * ctx->n; /* speculative: close the gap in one substep, no more */
@@ -344,7 +350,7 @@ void pg__solve(pg_world *w)
 
     ctx.n = w->def.step_hz * w->def.substeps;
     ctx.h_q32 = (int64_t)(((UINT64_C(1) << 32) + ctx.n / 2u) / ctx.n);
-    ctx.angle_per_w = (INT64_C(174997830547) + (int64_t)ctx.n / 2) / (int64_t)ctx.n; /* 2^40 / (2 pi) / n */
+    ctx.angle_per_w = (INT64_C(174992710548) + (int64_t)ctx.n / 2) / (int64_t)ctx.n; /* 2^40 / (2 pi) / n */
     hertz = w->def.contact_hertz;
     if ((int64_t)hertz * 4 > (int64_t)ctx.n * 65536) hertz = (pg_fix)((int64_t)ctx.n * 65536 / 4);
     ctx.soft = make_soft(hertz, w->def.contact_damping_ratio, ctx.n);
@@ -417,6 +423,8 @@ void pg__solve(pg_world *w)
         c->n = ct->normal;
         c->count = ct->point_count;
         c->soft_static = A->inv_mass == 0 || B->inv_mass == 0;
+        c->round_a = w->shapes[ct->shape_a].geometry.kind == PG_SHAPE_CIRCLE;
+        c->round_b = w->shapes[ct->shape_b].geometry.kind == PG_SHAPE_CIRCLE;
         c->restitution = (effects & PG_EFFECT_RESTITUTION) != 0 ? ct->restitution : 0;
         t.x = c->n.y;
         t.y = -c->n.x;
@@ -424,8 +432,15 @@ void pg__solve(pg_world *w)
             constraint_point *p = &c->p[k];
             const pg_contact_point *cp = &ct->points[k];
             denominator dn, dt;
-            p->rA = pg_v2_sub(cp->point, A->center);
-            p->rB = pg_v2_sub(cp->point, B->center);
+            {
+                /* Anchors on each body's own surface (the manifold point is midway between
+                 * them): a speculative point can be far from both bodies, and an anchor out
+                 * there would swing with the body's rotation and fake the gap. */
+                int64_t hx = pg__round_shift64((int64_t)c->n.x * cp->separation, 31);
+                int64_t hy = pg__round_shift64((int64_t)c->n.y * cp->separation, 31);
+                p->rA = pg_v2(pg__sat64((int64_t)cp->point.x - hx - A->center.x), pg__sat64((int64_t)cp->point.y - hy - A->center.y));
+                p->rB = pg_v2(pg__sat64((int64_t)cp->point.x + hx - B->center.x), pg__sat64((int64_t)cp->point.y + hy - B->center.y));
+            }
             p->adjusted_separation = cp->separation - dot_dv(c->n, pg_v2_sub(p->rB, p->rA));
             p->cnA = cross_rd(p->rA, c->n);
             p->cnB = cross_rd(p->rB, c->n);

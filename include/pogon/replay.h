@@ -99,7 +99,8 @@ const char *pg_command_kind_name(pg_command_kind kind);
 pg_result pg_command_apply(pg_world *world, const pg_command *command, pg_body_id *created);
 
 /* Binary form of a command, little-endian fixed-width fields (docs/formats.md):
- * u8 kind, then the fields that kind uses, in the order of the struct. Encoding is
+ * u8 kind, then the fields that kind uses in the order of docs/formats.md (the order of the
+ * struct, except that APPLY_FORCE's flag comes before its point). Encoding is
  * canonical: decode(encode(c)) == c for every valid command. */
 #define PG_COMMAND_ENCODED_MAX 256
 /* Bytes written (0 if the command is invalid or `capacity` is short). */
@@ -127,7 +128,7 @@ uint32_t pg_command_queue_apply_due(pg_command_queue *q, pg_world *world, uint32
 
 /* ---- hashes ---------------------------------------------------------------------------- */
 typedef enum pg_section {
-    PG_SECTION_SETTINGS = 0,  /* world def in force, frame counter, statistics that persist */
+    PG_SECTION_SETTINGS = 0,  /* world def in force and the frame counter (statistics are not state) */
     PG_SECTION_BODIES = 1,    /* body pool: slots, generations, motion, sleep timers, islands */
     PG_SECTION_SHAPES = 2,    /* shape pool: slots, generations, geometry, material, filter */
     PG_SECTION_CONTACTS = 3,  /* contact list in order: manifolds, warm-start impulses */
@@ -150,7 +151,7 @@ uint64_t pg_hash_bytes(uint64_t seed, const void *data, size_t size);
 size_t pg_world_snapshot_size(const pg_world *world);
 /* Write the snapshot; *written receives its size. PG_ERR_MEMORY if `capacity` is short. */
 pg_result pg_world_snapshot_save(const pg_world *world, void *buffer, size_t capacity, size_t *written);
-/* Restore into `world` (created with capacities at least those of the saved world).
+/* Restore into `world` (created with the same capacities as the saved world).
  * The snapshot is validated first: a corrupt one changes nothing and returns
  * PG_ERR_INVALID_ARGUMENT with the offset and field in pg_world_last_error(). */
 pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_t size);
