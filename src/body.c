@@ -147,6 +147,32 @@ pg_result pg_body_destroy(pg_world *world, pg_body_id id)
 int pg_body_is_valid(const pg_world *world, pg_body_id body) { return pg__body(world, body) != NULL; }
 
 /* ---- mass ------------------------------------------------------------------------------------ */
+/* Would the body's mass properties fit their formats with its shapes at `density`
+ * (0: each shape's own) plus `extra` at `extra_density`? A 100 m box at density 100
+ * has an inertia of 1.7e9 kg m^2, beyond Q28.36's 1.3e8: such a body is refused rather
+ * than silently saturated. */
+int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, const pg_geom *extra, pg_fix extra_density)
+{
+    const pg_body *b = &world->bodies[body_index];
+    const pg_geom *geoms[65];
+    pg_fix densities[65];
+    int n = 0;
+    uint32_t s;
+    pg_mass_data md;
+    for (s = b->first_shape; s != PG_NULL_INDEX && n < 64; s = world->shapes[s].next) {
+        geoms[n] = &world->shapes[s].local;
+        densities[n] = density != 0 ? density : world->shapes[s].density;
+        ++n;
+    }
+    if (extra != NULL) {
+        geoms[n] = extra;
+        densities[n] = extra_density;
+        ++n;
+    }
+    md = pg_compound_mass(geoms, densities, n);
+    return md.mass < INT64_MAX && md.inertia < INT64_MAX;
+}
+
 void pg__body_update_mass(pg_world *world, uint32_t body_index)
 {
     pg_body *b = &world->bodies[body_index];
@@ -314,6 +340,8 @@ pg_result pg_body_set_type(pg_world *world, pg_body_id id, pg_body_type type)
     if (type != PG_BODY_STATIC && type != PG_BODY_KINEMATIC && type != PG_BODY_DYNAMIC)
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
     if (b->type == type) return PG_OK;
+    if (type == PG_BODY_DYNAMIC && !pg__mass_fits(world, id.index, 0, NULL, 0))
+        return pg__fail(world, PG_ERR_ENVELOPE, "as a dynamic body its inertia would exceed 1.3e8 kg m^2 (Q28.36): make it smaller or lighter");
     pg__remove_body_contacts(world, id.index); /* pairs are found again next step */
     b->type = type;
     if (type == PG_BODY_STATIC) b->v = pg_v2_zero(), b->w = 0;
@@ -384,6 +412,8 @@ static pg_result set_material(pg_world *world, pg_body_id id, int which, pg_fix 
     if (which == 2 && b->type == PG_BODY_DYNAMIC && (value < PG_ENV_MIN_DENSITY || value > PG_ENV_MAX_DENSITY))
         return pg__fail_value(world, PG_ERR_ENVELOPE, "density", value, "is outside 0.1..100 kg/m^2");
     if (which == 2 && (value < 0 || value > PG_ENV_MAX_DENSITY)) return pg__fail_value(world, PG_ERR_ENVELOPE, "density", value, "is outside 0..100 kg/m^2");
+    if (which == 2 && b->type == PG_BODY_DYNAMIC && !pg__mass_fits(world, id.index, value, NULL, 0))
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "density", value, "makes the body's inertia exceed 1.3e8 kg m^2 (Q28.36)");
     for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
         if (which == 0) world->shapes[s].friction = value;
         else if (which == 1) world->shapes[s].restitution = value;

@@ -1,4 +1,5 @@
 /* shape.c — geometry validation, shapes on bodies, and the six ready-made kinds. */
+#include "mass.h"
 #include "world_internal.h"
 
 #define MAX_OFFSET PG_FIX_C(50)       /* a shape's vertices within 50 m of its body */
@@ -227,6 +228,12 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     r = check_geometry(world, geometry);
     if (r != PG_OK) return r;
     if (b->shape_count >= 64) return pg__fail(world, PG_ERR_CAPACITY, "a body has at most 64 shapes");
+    if (b->type == PG_BODY_DYNAMIC) {
+        pg_geom local;
+        pg__shape_build_local(geometry, &local);
+        if (!pg__mass_fits(world, body.index, 0, &local, def->density))
+            return pg__fail(world, PG_ERR_ENVELOPE, "the body's inertia would exceed 1.3e8 kg m^2 (Q28.36): make it smaller or lighter");
+    }
     for (i = 0; i < world->def.max_shapes; ++i)
         if (!world->shapes[i].used) break;
     if (i == world->def.max_shapes) return pg__fail(world, PG_ERR_CAPACITY, "max_shapes reached");
@@ -318,6 +325,20 @@ static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_de
         r = check_shape_def(w, &probe, sd);
         for (i = 0; r == PG_OK && i < n; ++i) r = check_geometry(w, &g[i]);
         if (r != PG_OK) return r;
+        if (bd->type == PG_BODY_DYNAMIC) {
+            pg_geom locals[2];
+            const pg_geom *ptrs[2];
+            pg_fix dens[2];
+            pg_mass_data md;
+            for (i = 0; i < n && i < 2; ++i) {
+                pg__shape_build_local(&g[i], &locals[i]);
+                ptrs[i] = &locals[i];
+                dens[i] = sd->density;
+            }
+            md = pg_compound_mass(ptrs, dens, n < 2 ? n : 2);
+            if (md.mass == INT64_MAX || md.inertia == INT64_MAX)
+                return pg__fail(w, PG_ERR_ENVELOPE, "the body's inertia would exceed 1.3e8 kg m^2 (Q28.36): make it smaller or lighter");
+        }
     }
     r = pg_body_create(w, bd, &id);
     if (r != PG_OK) return r;

@@ -130,6 +130,7 @@ void pg__push_end_event(pg_world *world, const pg_contact *c);
 
 /* body.c */
 void pg__body_update_mass(pg_world *world, uint32_t body_index);
+int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, const pg_geom *extra, pg_fix extra_density);
 void pg__body_sync_geometry(pg_world *world, uint32_t body_index); /* world geoms + boxes */
 void pg__wake_body(pg_world *world, uint32_t body_index);         /* and its island */
 int pg__body_is_active(const pg_body *b); /* awake and movable: takes part in the solver */
