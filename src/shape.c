@@ -190,6 +190,13 @@ static pg_result check_shape_def(const pg_world *world, const pg_body *b, const 
 
 static pg_result check_geometry(const pg_world *world, const pg_geometry *g)
 {
+    pg_result r = pg__validate_geometry(g);
+    if (r != PG_OK) return pg__fail(world, r, "geometry is invalid: build it with the pg_geometry_* functions and check their result");
+    return PG_OK;
+}
+
+pg_result pg__validate_geometry(const pg_geometry *g)
+{
     pg_geometry copy;
     pg_result r;
     switch (g->kind) {
@@ -210,8 +217,7 @@ static pg_result check_geometry(const pg_world *world, const pg_geometry *g)
         r = PG_ERR_INVALID_ARGUMENT;
         break;
     }
-    if (r != PG_OK) return pg__fail(world, r, "geometry is invalid: build it with the pg_geometry_* functions and check their result");
-    return PG_OK;
+    return r;
 }
 
 pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *def, const pg_geometry *geometry, pg_shape_id *out)

@@ -292,6 +292,13 @@ typedef struct source {
     size_t size, pos;
     const char *error_field;
     size_t error_offset;
+    /* validation pass only: what it has read so far, to check cross-references (kept
+     * in the world's per-step scratch, which no state depends on) */
+    uint32_t *body_info;    /* 5 per body: used, first shape, shape count, active, island */
+    uint32_t n_bodies, n_shapes;
+    uint32_t *shape_owner;  /* per shape: owning body, or PG_NULL_INDEX when unused */
+    uint32_t *shape_next;
+    uint8_t *shape_mark;
 } source;
 
 static int src_need(source *r, size_t n, const char *field)
@@ -384,6 +391,7 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
             at = r->pos;
             n = take_u32(r, "bodies.count");
             if (n > caps->max_bodies) invalid(r, at, "bodies.count");
+            r->n_bodies = n <= caps->max_bodies ? n : 0u;
             for (i = 0; i < n && r->error_field == NULL; ++i) {
                 pg_body b;
                 uint32_t used, m, flags;
@@ -441,10 +449,31 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                         b.inv_mass = take_i64(r, "body.inv_mass");
                         b.inv_inertia = take_i64(r, "body.inv_inertia");
                     }
+                    /* one encoding per state: a present optional field is not its default */
+                    if (((m & B_VELOCITY) && b.v.x == 0 && b.v.y == 0) || ((m & B_ANGULAR) && b.w == 0) ||
+                        ((m & B_FORCES) && b.force_x == 0 && b.force_y == 0 && b.torque == 0) ||
+                        ((m & B_DAMPING) && b.linear_damping == 0 && b.angular_damping == 0) ||
+                        ((m & B_GRAVITY_SCALE) && b.gravity_scale == PG_FIX_ONE) || ((m & B_USER) && b.user_data == 0) ||
+                        ((m & B_SLEEP_TIME) && b.sleep_time == 0) || ((m & B_ISLAND) && b.island == PG_NULL_INDEX))
+                        invalid(r, at, "body.presence (a present field holds its default)");
                     b.rot = pg_rot_from_angle(b.angle);
                     b.origin = pg_v2_sub(b.center, pg_rot_apply(b.rot, b.local_center));
                 }
+                if (r->body_info != NULL) {
+                    r->body_info[5u * i] = used;
+                    r->body_info[5u * i + 1u] = used ? b.first_shape : PG_NULL_INDEX;
+                    r->body_info[5u * i + 2u] = b.shape_count;
+                    r->body_info[5u * i + 3u] = used ? (uint32_t)pg__body_is_active(&b) : 0u;
+                    r->body_info[5u * i + 4u] = used ? b.island : PG_NULL_INDEX;
+                }
                 if (w != NULL) w->bodies[i] = b;
+            }
+            if (r->body_info != NULL) { /* islands name used bodies */
+                for (i = 0; i < n && r->error_field == NULL; ++i) {
+                    uint32_t island = r->body_info[5u * i + 4u];
+                    if (r->body_info[5u * i] && island != PG_NULL_INDEX && (island >= n || !r->body_info[5u * island]))
+                        invalid(r, start, "body.island (not a used body)");
+                }
             }
             if (w != NULL) {
                 for (i = n; i < w->def.max_bodies; ++i) { /* slots never used */
@@ -457,6 +486,7 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
             at = r->pos;
             n = take_u32(r, "shapes.count");
             if (n > caps->max_shapes) invalid(r, at, "shapes.count");
+            r->n_shapes = n <= caps->max_shapes ? n : 0u;
             for (i = 0; i < n && r->error_field == NULL; ++i) {
                 pg_shape sh;
                 uint32_t used;
@@ -490,9 +520,38 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                     sh.restitution = take_i32(r, "shape.restitution");
                     sh.category = take_u32(r, "shape.category");
                     sh.mask = take_u32(r, "shape.mask");
+                    if (r->error_field == NULL && pg__validate_geometry(&sh.geometry) != PG_OK) invalid(r, at, "shape.geometry");
+                    if (sh.density < 0 || sh.density > PG_FIX_C(100) || sh.friction < 0 || sh.friction > PG_FIX_C(10) ||
+                        sh.restitution < 0 || sh.restitution > PG_FIX_ONE)
+                        invalid(r, at, "shape.material");
                     if (w != NULL) pg__shape_build_local(&sh.geometry, &sh.local);
                 }
+                if (r->shape_owner != NULL) {
+                    r->shape_owner[i] = used ? sh.body : PG_NULL_INDEX;
+                    r->shape_next[i] = sh.next;
+                    r->shape_mark[i] = 0;
+                }
                 if (w != NULL) w->shapes[i] = sh;
+            }
+            if (r->shape_owner != NULL && r->error_field == NULL) {
+                /* every used body's list holds exactly its shape_count shapes, each owned
+                 * by it and met once; every used shape is on its owner's list */
+                uint32_t b;
+                for (b = 0; b < r->n_bodies && r->error_field == NULL; ++b) {
+                    uint32_t sidx = r->body_info[5u * b + 1u], k2;
+                    if (!r->body_info[5u * b]) continue;
+                    for (k2 = 0; k2 < r->body_info[5u * b + 2u]; ++k2) {
+                        if (sidx >= n || r->shape_owner[sidx] != b || r->shape_mark[sidx]) { invalid(r, start, "shape lists (body.first_shape, shape.next, shape.body)"); break; }
+                        r->shape_mark[sidx] = 1;
+                        sidx = r->shape_next[sidx];
+                    }
+                    if (r->error_field == NULL && sidx != PG_NULL_INDEX) invalid(r, start, "shape lists (body.shape_count)");
+                }
+                for (i = 0; i < n && r->error_field == NULL; ++i) /* owners are used bodies */
+                    if (r->shape_owner[i] != PG_NULL_INDEX && (r->shape_owner[i] >= r->n_bodies || !r->body_info[5u * r->shape_owner[i]]))
+                        invalid(r, start, "shape.body (not a used body)");
+                for (i = 0; i < n && r->error_field == NULL; ++i)
+                    if (r->shape_owner[i] != PG_NULL_INDEX && !r->shape_mark[i]) invalid(r, start, "shape lists (a shape is on no list)");
             }
             if (w != NULL) {
                 uint32_t count = 0;
@@ -505,6 +564,7 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                 w->shape_count = count;
             }
         } else if (k == PG_SECTION_CONTACTS) {
+            uint32_t prev_a = 0, prev_b = 0;
             at = r->pos;
             n = take_u32(r, "contacts.count");
             if (n > caps->max_contacts) invalid(r, at, "contacts.count");
@@ -518,10 +578,21 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                 c.shape_a = take_u32(r, "contact.shape_a");
                 c.shape_b = take_u32(r, "contact.shape_b");
                 if (c.shape_a >= caps->max_shapes || c.shape_b >= caps->max_shapes || c.shape_a >= c.shape_b) invalid(r, at, "contact.shapes");
+                if (r->shape_owner != NULL && r->error_field == NULL) {
+                    if (c.shape_b >= r->n_shapes || r->shape_owner[c.shape_a] == PG_NULL_INDEX || r->shape_owner[c.shape_b] == PG_NULL_INDEX)
+                        invalid(r, at, "contact.shapes (unused shape)");
+                    else if (i > 0 && (c.shape_a < prev_a || (c.shape_a == prev_a && c.shape_b <= prev_b)))
+                        invalid(r, at, "contact.shapes (not in order)");
+                    prev_a = c.shape_a;
+                    prev_b = c.shape_b;
+                }
                 at = r->pos;
                 c.body_a = take_u32(r, "contact.body_a");
                 c.body_b = take_u32(r, "contact.body_b");
                 if (c.body_a >= caps->max_bodies || c.body_b >= caps->max_bodies) invalid(r, at, "contact.bodies");
+                if (r->shape_owner != NULL && r->error_field == NULL &&
+                    (c.body_a != r->shape_owner[c.shape_a] || c.body_b != r->shape_owner[c.shape_b]))
+                    invalid(r, at, "contact.bodies (not the shapes' owners)");
                 c.normal.x = take_i32(r, "contact.normal");
                 c.normal.y = take_i32(r, "contact.normal");
                 c.friction = take_i32(r, "contact.friction");
@@ -541,8 +612,19 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                 if (w != NULL) w->contacts[i] = c;
             }
             if (w != NULL) w->contact_count = n;
+        } else if (k == PG_SECTION_BROADPHASE) {
+            /* derived: must be exactly what the bodies and shapes above imply */
+            for (i = 0; r->shape_owner != NULL && i < r->n_shapes && r->error_field == NULL; ++i) {
+                uint32_t owner = r->shape_owner[i];
+                if (owner == PG_NULL_INDEX) continue;
+                at = r->pos;
+                if (take_u32(r, "broadphase.shape") != i) invalid(r, at, "broadphase.shape");
+                at = r->pos;
+                if (take(r, "broadphase.active") != r->body_info[5u * owner + 3u]) invalid(r, at, "broadphase.active");
+            }
+            if (r->shape_owner == NULL) r->pos = r->error_field == NULL ? start + length : r->pos;
         } else {
-            r->pos = r->error_field == NULL ? start + length : r->pos; /* derived or empty: skip */
+            r->pos = r->error_field == NULL ? start + length : r->pos; /* joints: empty */
         }
         if (r->error_field == NULL && r->pos != start + length) invalid(r, start - 4u, "section length");
     }
@@ -559,6 +641,13 @@ pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_
     r.pos = 0;
     r.error_field = NULL;
     r.error_offset = 0;
+    r.n_bodies = r.n_shapes = 0;
+    /* per-step scratch, free between steps: the solver scratch holds 5 u32 per body,
+     * the compacted proxy arrays one entry per shape */
+    r.body_info = (uint32_t *)world->solver_scratch;
+    r.shape_owner = world->proxy_shape;
+    r.shape_next = (uint32_t *)(void *)world->proxy_boxes;
+    r.shape_mark = world->proxy_flags_compact;
     decode(&r, NULL, &world->def); /* validate everything first */
     if (r.error_field != NULL) {
         char detail[96], num[24];
@@ -575,6 +664,10 @@ pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, detail);
     }
     r.pos = 0;
+    r.body_info = NULL;
+    r.shape_owner = NULL;
+    r.shape_next = NULL;
+    r.shape_mark = NULL;
     decode(&r, world, &world->def);
     for (i = 0; i < world->body_high; ++i) bodies += (world->bodies[i].flags & PG_BODY_FLAG_USED) != 0;
     world->body_count = bodies;

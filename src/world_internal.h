@@ -138,6 +138,7 @@ pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v);                /* the docum
 
 /* shape.c */
 void pg__shape_build_local(const pg_geometry *g, pg_geom *out); /* collision form of a geometry */
+pg_result pg__validate_geometry(const pg_geometry *g);             /* what pg_shape_create accepts */
 
 /* contact.c */
 pg_result pg__update_contacts(pg_world *world);
