@@ -422,7 +422,10 @@ void pg__solve(pg_world *w)
         c->contact = i;
         c->n = ct->normal;
         c->count = ct->point_count;
-        c->soft_static = A->inv_mass == 0 || B->inv_mass == 0;
+        /* A side that cannot move gets the stiffer softness, and so does a pair whose
+         * masses differ 4:1 or more: a soft contact's steady overlap grows with the load
+         * over the lighter body's mass, and this halves it where the ratio is large. */
+        c->soft_static = A->inv_mass == 0 || B->inv_mass == 0 || A->inv_mass / 4 >= B->inv_mass || B->inv_mass / 4 >= A->inv_mass;
         c->round_a = w->shapes[ct->shape_a].geometry.kind == PG_SHAPE_CIRCLE;
         c->round_b = w->shapes[ct->shape_b].geometry.kind == PG_SHAPE_CIRCLE;
         c->restitution = (effects & PG_EFFECT_RESTITUTION) != 0 ? ct->restitution : 0;
