@@ -3,7 +3,7 @@
 #
 # Usage: scripts/setup-deps.sh [--check] [GROUP...]
 #   GROUP    one or more of the groups below; default: the groups scripts/test.sh
-#            and scripts/demo.sh need (build test)
+#            and scripts/demo.sh need (build test wasm cross)
 #   --check  only report what is missing; exit 1 if anything is
 #
 # Idempotent: packages already installed (dpkg says "install ok installed") are left
@@ -27,18 +27,26 @@ PACKAGES=(
   # --- test: the unit tests and the second compiler ----------------------------------
   "test|libcmocka-dev|unit-test framework (CMocka 1.1.5) for the tests in tests/"
   "test|clang|the second compiler (clang preset): warnings and gcc-vs-clang determinism"
-  # --- optional groups for later work: install with e.g. scripts/setup-deps.sh wasm ---
-  "wasm|emscripten|WebAssembly build (emscripten preset); needs NODE_PATH=/usr/share/nodejs"
-  "cross|gcc-arm-linux-gnueabihf|32-bit ARM cross compiler, for determinism on another ISA"
-  "cross|gcc-s390x-linux-gnu|big-endian cross compiler (s390x)"
-  "cross|qemu-user|runs the static ARM and s390x test programs (qemu-arm, qemu-s390x)"
+  # --- wasm, cross: the determinism_* tests (tests/targets) build the probe for other
+  # targets and compare its hashes with the native build's. scripts/test.sh runs them, so
+  # both groups are in the default set. The cross compilers only *recommend* their C
+  # libraries, and apt-get runs here with --no-install-recommends: list them explicitly.
+  "wasm|emscripten|WebAssembly build (emscripten preset, determinism_wasm32); needs NODE_PATH=/usr/share/nodejs"
+  "wasm|nodejs|runs the wasm32 programs (determinism_wasm32, the emscripten preset's tests)"
+  "cross|gcc-arm-linux-gnueabihf|32-bit ARM cross compiler (determinism_arm32: another ISA, 32-bit long and pointers)"
+  "cross|libc6-dev-armhf-cross|C library headers and static libc for the ARM cross compiler"
+  "cross|gcc-s390x-linux-gnu|big-endian cross compiler (determinism_s390x: byte order)"
+  "cross|libc6-dev-s390x-cross|C library headers and static libc for the s390x cross compiler"
+  "cross|qemu-user|runs the static ARM and s390x programs (qemu-arm, qemu-s390x); no binfmt needed"
+  # --- optional groups for later work: install with e.g. scripts/setup-deps.sh peers ---
   "cortex-m|gcc-arm-none-eabi|bare-metal Cortex-M compiler"
   "cortex-m|libnewlib-arm-none-eabi|C library for the Cortex-M firmware"
   "cortex-m|qemu-system-arm|runs the firmware on the mps2-an385 (Cortex-M3) board"
   "peers|libbox2d-dev|Box2D 2.4.1, a float peer for the benchmarks"
   "peers|libchipmunk-dev|Chipmunk2D 7.0.3, a float peer for the benchmarks"
+  "peers|g++|C++ compiler for the Box2D harness (tools/bench/peers; matter.js comes from npm, node and emcc from the wasm group)"
 )
-DEFAULT_GROUPS=(build test)
+DEFAULT_GROUPS=(build test wasm cross)
 
 check_only=0
 groups=()

@@ -231,12 +231,12 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
         pg_aabb box;
         pg_geom_transform(&world->shapes[s].local, b->origin, b->rot, &world->world_geoms[s]);
         box = pg_geom_aabb(&world->world_geoms[s]);
-        box.lo.x -= margin;
-        box.lo.y -= margin;
-        box.hi.x += margin;
-        box.hi.y += margin;
-        if (b->v.x < 0) box.lo.x -= sweep_x; else box.hi.x += sweep_x;
-        if (b->v.y < 0) box.lo.y -= sweep_y; else box.hi.y += sweep_y;
+        /* saturating: a body that has flown out of the envelope reaches the edge of the
+         * Q16.16 range, where a plain add would overflow */
+        box.lo.x = pg__sat64((int64_t)box.lo.x - margin - (b->v.x < 0 ? sweep_x : 0));
+        box.lo.y = pg__sat64((int64_t)box.lo.y - margin - (b->v.y < 0 ? sweep_y : 0));
+        box.hi.x = pg__sat64((int64_t)box.hi.x + margin + (b->v.x < 0 ? 0 : sweep_x));
+        box.hi.y = pg__sat64((int64_t)box.hi.y + margin + (b->v.y < 0 ? 0 : sweep_y));
         world->boxes[s] = box;
     }
     b->flags &= ~(uint32_t)PG_BODY_FLAG_GEOMETRY_DIRTY;

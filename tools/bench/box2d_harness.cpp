@@ -1,6 +1,8 @@
 // pogon-bench-box2d — the pogon-bench scenes in Box2D 2.4.1, for comparison.
 //
 // Usage: pogon-bench-box2d SCENE [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]
+//                          [--no-continuous] [--velocity-iterations N] [--position-iterations N]
+//                          [--variant LABEL]
 //        pogon-bench-box2d all [options]
 //
 // Same scenes as tools/scenes/scenes.c: a static ground 100 x 2 m whose top is at y = 0,
@@ -10,7 +12,9 @@
 // 0.5 m) and positions come from the same xorshift32 sequence (seed 12345) in the same
 // order, converted from the same Q16.16 integers. Box2D settings: gravity (0, -10),
 // timestep 1/60, 8 velocity and 3 position iterations (its defaults), sleeping on
-// (--no-sleep: SetAllowSleeping(false)).
+// (--no-sleep: SetAllowSleeping(false)), continuous collision on (--no-continuous:
+// SetContinuousPhysics(false)); --velocity-iterations / --position-iterations change the
+// iteration counts, --variant only labels the JSON line (tools/bench/peers uses it).
 //
 // Method (as pogon-bench): build `repeat` times (default 3), time `steps` steps (default
 // 600 for pyramid/stack, 300 for rain) with clock_gettime(CLOCK_MONOTONIC) around the
@@ -35,6 +39,9 @@ struct Options {
     uint32_t count = 0, steps = 0, repeat = 3;
     bool json = false;
     bool no_sleep = false;
+    bool no_continuous = false;
+    uint32_t velocity_iterations = 8, position_iterations = 3;
+    std::string variant;
 };
 
 struct Result {
@@ -45,6 +52,9 @@ struct Result {
     double disp = 0, dx = 0, dy = 0, angle_deg = 0;
     uint32_t awake = 0, contacts = 0, touching = 0;
     bool sleeping = true;
+    bool continuous = true;
+    uint32_t velocity_iterations = 8, position_iterations = 3;
+    std::string variant;
 };
 
 double now_ms()
@@ -150,9 +160,14 @@ bool run(const std::string &scene, const Options &o, uint32_t count_override, Re
     res->repeat = repeat;
     res->stands = !rain;
     res->sleeping = !o.no_sleep;
+    res->continuous = !o.no_continuous;
+    res->velocity_iterations = o.velocity_iterations;
+    res->position_iterations = o.position_iterations;
+    res->variant = o.variant;
     for (uint32_t r = 0; r < repeat; ++r) {
         b2World *w = new b2World(b2Vec2(0.0f, -10.0f));
         w->SetAllowSleeping(!o.no_sleep);
+        w->SetContinuousPhysics(!o.no_continuous);
         b2Body *top = build(w, scene, count, &res->bodies);
         if (top == nullptr) {
             delete w;
@@ -160,7 +175,7 @@ bool run(const std::string &scene, const Options &o, uint32_t count_override, Re
         }
         b2Vec2 start = top->GetPosition();
         double t0 = now_ms();
-        for (uint32_t i = 0; i < steps; ++i) w->Step(1.0f / 60.0f, 8, 3);
+        for (uint32_t i = 0; i < steps; ++i) w->Step(1.0f / 60.0f, (int32)o.velocity_iterations, (int32)o.position_iterations);
         double t1 = now_ms();
         runs.push_back((t1 - t0) / (double)steps);
         b2Vec2 p = top->GetPosition();
@@ -188,7 +203,11 @@ bool run(const std::string &scene, const Options &o, uint32_t count_override, Re
 
 void print_json(const Result &r)
 {
-    std::printf("{\"engine\":\"box2d-2.4.1\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":0,"
+    std::printf("{\"engine\":\"box2d-2.4.1\",");
+    if (!r.variant.empty()) std::printf("\"variant\":\"%s\",", r.variant.c_str());
+    std::printf("\"continuous\":%s,\"velocity_iterations\":%u,\"position_iterations\":%u,", r.continuous ? "true" : "false",
+                r.velocity_iterations, r.position_iterations);
+    std::printf("\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":0,"
                 "\"repeat\":%u,\"sleeping\":%s,\"ms_per_step\":%.6f,\"ms_min\":%.6f,\"ms_max\":%.6f,\"steps_per_second\":%.2f,",
                 r.scene.c_str(), r.count, r.bodies, r.steps, r.repeat, r.sleeping ? "true" : "false", r.ms, r.ms_min,
                 r.ms_max, r.sps);
@@ -239,18 +258,25 @@ int main(int argc, char **argv)
             o.json = true;
         } else if (a == "--no-sleep") {
             o.no_sleep = true;
-        } else if (a == "--count" || a == "--steps" || a == "--repeat") {
+        } else if (a == "--no-continuous") {
+            o.no_continuous = true;
+        } else if (a == "--variant" && i + 1 < argc) {
+            o.variant = argv[++i];
+        } else if (a == "--count" || a == "--steps" || a == "--repeat" || a == "--velocity-iterations" ||
+                   a == "--position-iterations") {
             uint32_t v;
             if (i + 1 >= argc || !parse_u32(argv[i + 1], &v)) {
                 std::fprintf(stderr, "pogon-bench-box2d: %s needs a positive integer\n", a.c_str());
                 return 2;
             }
-            (a == "--count" ? o.count : a == "--steps" ? o.steps : o.repeat) = v;
+            (a == "--count" ? o.count : a == "--steps" ? o.steps : a == "--repeat" ? o.repeat
+             : a == "--velocity-iterations" ? o.velocity_iterations : o.position_iterations) = v;
             ++i;
         } else if (a[0] != '-' && mode.empty()) {
             mode = a;
         } else {
-            std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n");
+            std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n"
+                         "         [--no-continuous] [--velocity-iterations N] [--position-iterations N] [--variant LABEL]\n");
             return 2;
         }
     }
@@ -260,7 +286,8 @@ int main(int argc, char **argv)
     } else if (mode == "all") {
         todo = {{"pyramid", 20u}, {"stack", 20u}, {"rain", 1000u}, {"rain", 2000u}, {"rain", 4000u}, {"rain", 8000u}, {"rain", 16000u}};
     } else {
-        std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n");
+        std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n"
+                         "         [--no-continuous] [--velocity-iterations N] [--position-iterations N] [--variant LABEL]\n");
         return 2;
     }
     if (!o.json) print_header();

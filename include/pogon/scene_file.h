@@ -1,0 +1,129 @@
+/* pogon/scene_file.h — worlds as text: read and write pogon scene files.
+ *
+ * WHAT IT IS
+ *   A scene file describes a world in a small line-oriented text format (specified in
+ *   docs/formats.md, "Scene files"): the world's settings, then its bodies with their
+ *   shapes and properties. It starts with the line `pogon-scene 1`:
+ *
+ *       pogon-scene 1
+ *       # a ground and a box
+ *       gravity 0 -10
+ *       wall 40 2 position 0 -1              # ready-made kinds: one line each
+ *       box 1 1 position 0 4 angle 30 friction 0.3
+ *       body dynamic                         # or a body with any shapes
+ *         position 2 6
+ *         shape circle 0.5 offset 0 0.25 density 2
+ *         shape polygon -0.5 0 0.5 0 0 0.8
+ *       end
+ *
+ *   Every number is exact decimal read with pg_fix_parse (fixed.h), so a scene file
+ *   gives the same bits on every machine; angles are degrees, converted exactly to a
+ *   binary angle (round(degrees * 2^32 / 360) computed from the Q16.16 value).
+ *
+ * HOW TO USE IT
+ *     pg_world_def def;
+ *     pg_scene_error err;
+ *     if (pg_scene_read_def(text, length, &def, &err) != PG_OK) {
+ *         fprintf(stderr, "%s\n", err.message);    // "line 12, column 9: expected ..."
+ *         return;
+ *     }
+ *     size_t need = pg_world_memory_size(&def);    // capacities may be raised first
+ *     ... memory of `need` bytes, aligned to 8 ...
+ *     pg_world_create(&def, memory, need, &world);
+ *     if (pg_scene_load(world, text, length, &err) != PG_OK) ... // recreate the world
+ *
+ *     size_t n = pg_scene_write(world, NULL, 0);   // bytes needed, without the NUL
+ *     ... a buffer of n + 1 bytes ...
+ *     pg_scene_write(world, buffer, n + 1);
+ *
+ * CONVENTIONS
+ *   - Text is read from (text, length): never beyond `length`, and it need not end with
+ *     a NUL. The reader does not allocate, does not recurse, and accepts LF or CRLF line
+ *     ends. It returns a pg_result for any input (it is fuzzed: tests/fuzz/fuzz_scene.c).
+ *   - Errors name the line and column (both from 1) and what was expected, in
+ *     pg_scene_error.message: "line 12, column 9: expected a number for 'density',
+ *     got 'abc'". Results: PG_ERR_INVALID_ARGUMENT for text that does not follow the
+ *     format (bad version line, unknown keyword, missing or malformed value, wrong
+ *     number of polygon vertices, bytes that are not text); PG_ERR_ENVELOPE for a
+ *     well-formed number outside its allowed range (including numbers beyond Q16.16 or
+ *     beyond an integer's width); PG_ERR_DEGENERATE / PG_ERR_NOT_CONVEX / PG_ERR_ENVELOPE
+ *     from pg_geometry_* for bad shapes; PG_ERR_BODY_TYPE for a velocity on a static
+ *     body or a wall of another type; PG_ERR_CAPACITY when the scene needs more bodies or
+ *     shapes than its capacities (or a body more than 64 shapes).
+ *   - `error` may be NULL everywhere. On success it is cleared (line and column 0,
+ *     empty message).
+ */
+#ifndef POGON_SCENE_FILE_H
+#define POGON_SCENE_FILE_H
+
+#include "pogon/pogon.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The first line of every scene file of this version. */
+#define PG_SCENE_MAGIC "pogon-scene"
+#define PG_SCENE_VERSION 1
+
+/* Where and why reading failed. line and column count from 1 (0: no position, e.g. a
+ * NULL argument); column counts bytes. message is NUL-terminated, starts with
+ * "line L, column C: " when there is a position, and is cut to fit. */
+typedef struct pg_scene_error {
+    uint32_t line, column;
+    char message[160];
+} pg_scene_error;
+
+/* Read only the world settings from scene text, so the caller can size memory.
+ * The whole text is checked (syntax, ranges, shapes, counts), so a text accepted here
+ * fails in pg_scene_load only for reasons that need a world (its capacities, a
+ * different def). *def starts from pg_default_world_def() with the file's settings on
+ * top; capacities the file does not give are what the scene needs: max_bodies = its
+ * bodies, max_shapes = its shapes (at least 1 each), max_contacts = 4 * shapes + 64.
+ * Raise them before creating the world to leave room for more. *def is written only
+ * on success. */
+pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, pg_scene_error *error);
+
+/* Create the scene's bodies in `world`, in file order (each takes the lowest free body
+ * slot). The world must have been created from the def pg_scene_read_def gives for
+ * this text: every setting except the capacities must be equal (else
+ * PG_ERR_INVALID_ARGUMENT naming the setting, before anything is created), and the
+ * capacities must hold the scene's bodies and shapes besides any already in the world.
+ * The whole text is checked before the first body is made. If making a body still
+ * fails (PG_ERR_CAPACITY, or a value the world refuses), the error names that body's
+ * line and holds the world's detail (pg_world_last_error), and the world keeps the
+ * bodies completed before that line (a partly built body is destroyed): recreate the
+ * world to start again. */
+pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_scene_error *error);
+
+/* Write the world's settings (the def in force, capacities included) and every body
+ * with its shapes in their current state: type, position (the body origin), angle,
+ * velocities, damping, gravity scale, flags (fixed rotation, allow sleep, awake),
+ * user data; each shape's geometry, material and filter. Bodies are written in slot
+ * order, each as a `body` block; properties equal to their defaults are left out.
+ * Numbers are written with pg_fix_format (shortest exact decimal); an angle that
+ * whole-Q16.16 degrees cannot express exactly is written as `angle_bits 0x...`.
+ *
+ * What a scene does not hold: contacts and their warm-start impulses, sleep timers,
+ * which island a sleeping body belongs to (each loads as its own island), forces
+ * pending for the next step, the frame counter and statistics, the handles' slots and
+ * generations (bodies load compacted, in slot order). pg_scene_load of the text gives
+ * bodies and shapes equal to the world's, and writing that world again gives the
+ * same text. A body outside the envelope (e.g. one that fell beyond 1000 m) is written
+ * as it is, and loading that text refuses it with PG_ERR_ENVELOPE.
+ *
+ * snprintf-style: writes at most `capacity` bytes including a terminating NUL (nothing
+ * when capacity is 0; buffer may then be NULL) and returns the length of the whole
+ * text without the NUL. The output was cut when the result is >= capacity. A NULL
+ * world writes nothing and returns 0. */
+size_t pg_scene_write(const pg_world *world, char *buffer, size_t capacity);
+
+/* Degrees (Q16.16) to a binary angle exactly as the reader does: round(deg * 2^32 / 360)
+ * computed in 64-bit integers from the Q16.16 value (ties away from zero), modulo a
+ * full turn. 90 degrees gives PG_ANGLE_QUARTER, 45 gives 0x20000000. */
+pg_angle pg_scene_angle_from_degrees(pg_fix degrees);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,739 @@
+/* replay_file.c — replay files (docs/formats.md, "Replay files"): writer, validating
+ * reader and player. Integer-only, no allocation, no libc; every read is bounds-checked
+ * against the size the caller gave. */
+#include "pogon/replay_file.h"
+#include "pogon/scene_file.h"
+
+/* ---- little-endian fields ------------------------------------------------------------ */
+static void put_u16(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)(v & 0xFFu);
+    p[1] = (uint8_t)((v >> 8) & 0xFFu);
+}
+static void put_u32(uint8_t *p, uint32_t v)
+{
+    put_u16(p, v & 0xFFFFu);
+    put_u16(p + 2, v >> 16);
+}
+static void put_u64(uint8_t *p, uint64_t v)
+{
+    put_u32(p, (uint32_t)(v & 0xFFFFFFFFu));
+    put_u32(p + 4, (uint32_t)(v >> 32));
+}
+static uint32_t get_u16(const uint8_t *p) { return (uint32_t)p[0] | ((uint32_t)p[1] << 8); }
+static uint32_t get_u32(const uint8_t *p) { return get_u16(p) | (get_u16(p + 2) << 16); }
+static uint64_t get_u64(const uint8_t *p) { return (uint64_t)get_u32(p) | ((uint64_t)get_u32(p + 4) << 32); }
+
+static void copy_bytes(uint8_t *dst, const void *src, size_t n)
+{
+    const uint8_t *s = (const uint8_t *)src;
+    size_t i;
+    for (i = 0; i < n; ++i) dst[i] = s[i];
+}
+
+static uint64_t hash_range(const uint8_t *data, size_t begin, size_t end)
+{
+    return pg_hash_bytes(PG_HASH_SEED, data + begin, end - begin);
+}
+
+/* ---- error messages (no snprintf in the library) ---------------------------------------- */
+typedef struct msg { char *buf; size_t cap, len; } msg;
+
+static void msg_text(msg *m, const char *s)
+{
+    while (s != NULL && *s != '\0' && m->len + 1 < m->cap) m->buf[m->len++] = *s++;
+    m->buf[m->len] = '\0';
+}
+static void msg_u64(msg *m, uint64_t v)
+{
+    char tmp[24];
+    int n = 0;
+    do {
+        tmp[n++] = (char)('0' + (int)(v % 10u));
+        v /= 10u;
+    } while (v != 0u);
+    while (n > 0 && m->len + 1 < m->cap) m->buf[m->len++] = tmp[--n];
+    m->buf[m->len] = '\0';
+}
+static void msg_hex(msg *m, uint64_t v)
+{
+    static const char digits[] = "0123456789abcdef";
+    int shift;
+    msg_text(m, "0x");
+    for (shift = 60; shift >= 0; shift -= 4) {
+        if (m->len + 1 < m->cap) m->buf[m->len++] = digits[(v >> shift) & 0xFu];
+    }
+    m->buf[m->len] = '\0';
+}
+
+/* Fill *e (when not NULL) and return the message builder for details. */
+static msg set_error(pg_replay_error *e, size_t offset, const char *region, const char *field, int64_t frame,
+                     int64_t command, const char *text)
+{
+    msg m;
+    static char sink[2];
+    if (e == NULL) {
+        m.buf = sink;
+        m.cap = sizeof sink;
+    } else {
+        e->offset = offset;
+        e->region = region;
+        e->field = field;
+        e->frame = frame;
+        e->command = command;
+        m.buf = e->message;
+        m.cap = sizeof e->message;
+    }
+    m.len = 0;
+    m.buf[0] = '\0';
+    msg_text(&m, text);
+    return m;
+}
+
+static void clear_error(pg_replay_error *e)
+{
+    if (e != NULL) {
+        msg m = set_error(e, 0, "", "", -1, -1, "");
+        (void)m;
+    }
+}
+
+/* "stored X, computed Y" after a hash mismatch. */
+static pg_result hash_error(pg_replay_error *e, size_t offset, const char *region, const char *field, int64_t frame,
+                            const char *what, uint64_t stored, uint64_t computed)
+{
+    msg m = set_error(e, offset, region, field, frame, -1, what);
+    msg_text(&m, ": stored ");
+    msg_hex(&m, stored);
+    msg_text(&m, ", computed ");
+    msg_hex(&m, computed);
+    return PG_ERR_INVALID_ARGUMENT;
+}
+
+static pg_result value_error(pg_replay_error *e, size_t offset, const char *region, const char *field, int64_t frame,
+                             const char *what, uint64_t value, const char *tail)
+{
+    msg m = set_error(e, offset, region, field, frame, -1, what);
+    msg_u64(&m, value);
+    msg_text(&m, tail);
+    return PG_ERR_INVALID_ARGUMENT;
+}
+
+static pg_result truncated(pg_replay_error *e, size_t size, const char *region, const char *field, int64_t frame,
+                           size_t need_end)
+{
+    msg m = set_error(e, size, region, field, frame, -1, "file ends at byte ");
+    msg_u64(&m, size);
+    msg_text(&m, " inside this field (it needs ");
+    msg_u64(&m, need_end);
+    msg_text(&m, " bytes): the file is truncated");
+    return PG_ERR_INVALID_ARGUMENT;
+}
+
+/* ---- layout ----------------------------------------------------------------------------- */
+enum {
+    OFF_MAGIC = 0,
+    OFF_FORMAT = 8,
+    OFF_ENGINE_MAJOR = 10,
+    OFF_ENGINE_MINOR = 12,
+    OFF_ENGINE_PATCH = 14,
+    OFF_FLAGS = 16,
+    OFF_INTERVAL = 20,
+    OFF_SECTIONS = 24,
+    OFF_SCENE_SIZE = 28,
+    OFF_HEADER_HASH = 32,
+    OFF_SCENE_TEXT = 40
+};
+/* checkpoint record: tag u8, frame u32, hash u64, sections u64 x S, block hash u64 */
+static size_t checkpoint_size(uint32_t sections) { return 1u + 4u + 8u + 8u * (size_t)sections + 8u; }
+
+/* ---- writer ------------------------------------------------------------------------------ */
+pg_result pg_replay_writer_begin(pg_replay_writer *w, uint8_t *buffer, size_t capacity, const char *scene_text,
+                                 size_t scene_size, uint32_t checkpoint_interval)
+{
+    size_t need;
+    uint8_t *p;
+    if (w == NULL || buffer == NULL || (scene_text == NULL && scene_size != 0)) return PG_ERR_NULL;
+    if (checkpoint_interval == 0 || scene_size > 0xFFFFFFFFu - 64u) return PG_ERR_INVALID_ARGUMENT;
+    need = (size_t)OFF_SCENE_TEXT + scene_size + 8u;
+    w->buffer = buffer;
+    w->capacity = capacity;
+    w->size = 0;
+    w->block_start = 0;
+    w->checkpoint_interval = checkpoint_interval;
+    w->frame_count = 0;
+    w->checkpoint_count = 0;
+    w->finished = 0;
+    if (capacity < need) return PG_ERR_MEMORY;
+    p = buffer;
+    copy_bytes(p + OFF_MAGIC, PG_REPLAY_MAGIC, 8);
+    put_u16(p + OFF_FORMAT, PG_REPLAY_FORMAT_VERSION);
+    put_u16(p + OFF_ENGINE_MAJOR, POGON_VERSION_MAJOR);
+    put_u16(p + OFF_ENGINE_MINOR, POGON_VERSION_MINOR);
+    put_u16(p + OFF_ENGINE_PATCH, POGON_VERSION_PATCH);
+    put_u32(p + OFF_FLAGS, 0);
+    put_u32(p + OFF_INTERVAL, checkpoint_interval);
+    put_u32(p + OFF_SECTIONS, PG_SECTION_COUNT);
+    put_u32(p + OFF_SCENE_SIZE, (uint32_t)scene_size);
+    put_u64(p + OFF_HEADER_HASH, hash_range(p, 0, OFF_HEADER_HASH));
+    if (scene_size != 0) copy_bytes(p + OFF_SCENE_TEXT, scene_text, scene_size);
+    put_u64(p + OFF_SCENE_TEXT + scene_size, hash_range(p, OFF_SCENE_TEXT, OFF_SCENE_TEXT + scene_size));
+    w->size = need;
+    w->block_start = need;
+    return PG_OK;
+}
+
+pg_result pg_replay_writer_set_buffer(pg_replay_writer *w, uint8_t *buffer, size_t capacity)
+{
+    if (w == NULL || buffer == NULL) return PG_ERR_NULL;
+    if (capacity < w->size) return PG_ERR_INVALID_ARGUMENT;
+    w->buffer = buffer;
+    w->capacity = capacity;
+    return PG_OK;
+}
+
+int pg_replay_writer_checkpoint_due(const pg_replay_writer *w)
+{
+    if (w == NULL || w->finished || w->checkpoint_interval == 0) return 0;
+    return w->frame_count % w->checkpoint_interval == 0u &&
+           w->checkpoint_count <= w->frame_count / w->checkpoint_interval;
+}
+
+pg_result pg_replay_writer_add_frame(pg_replay_writer *w, const pg_command *commands, uint32_t count)
+{
+    size_t pos, i;
+    if (w == NULL || w->buffer == NULL || (commands == NULL && count != 0)) return PG_ERR_NULL;
+    if (w->finished || pg_replay_writer_checkpoint_due(w) || count > PG_REPLAY_MAX_FRAME_COMMANDS ||
+        w->frame_count == 0xFFFFFFFFu)
+        return PG_ERR_INVALID_ARGUMENT;
+    if (w->capacity - w->size < 3u) return PG_ERR_MEMORY;
+    pos = w->size;
+    w->buffer[pos] = (uint8_t)PG_REPLAY_TAG_FRAME;
+    put_u16(w->buffer + pos + 1, count);
+    pos += 3;
+    for (i = 0; i < count; ++i) {
+        uint8_t tmp[PG_COMMAND_ENCODED_MAX];
+        size_t n = pg_command_encode(&commands[i], tmp, sizeof tmp);
+        if (n == 0) return PG_ERR_INVALID_ARGUMENT; /* nothing committed: w->size unchanged */
+        if (w->capacity - pos < n) return PG_ERR_MEMORY;
+        copy_bytes(w->buffer + pos, tmp, n);
+        pos += n;
+    }
+    w->size = pos;
+    w->frame_count++;
+    return PG_OK;
+}
+
+pg_result pg_replay_writer_add_checkpoint(pg_replay_writer *w, uint64_t hash, const uint64_t sections[PG_SECTION_COUNT])
+{
+    size_t pos, need = checkpoint_size(PG_SECTION_COUNT);
+    unsigned s;
+    if (w == NULL || w->buffer == NULL || sections == NULL) return PG_ERR_NULL;
+    if (!pg_replay_writer_checkpoint_due(w)) return PG_ERR_INVALID_ARGUMENT;
+    if (w->capacity - w->size < need) return PG_ERR_MEMORY;
+    pos = w->size;
+    w->buffer[pos] = (uint8_t)PG_REPLAY_TAG_CHECKPOINT;
+    put_u32(w->buffer + pos + 1, w->frame_count);
+    put_u64(w->buffer + pos + 5, hash);
+    for (s = 0; s < PG_SECTION_COUNT; ++s) put_u64(w->buffer + pos + 13 + 8u * s, sections[s]);
+    pos += need - 8u;
+    put_u64(w->buffer + pos, hash_range(w->buffer, w->block_start, pos));
+    pos += 8u;
+    w->size = pos;
+    w->block_start = pos;
+    w->checkpoint_count++;
+    return PG_OK;
+}
+
+pg_result pg_replay_writer_add_checkpoint_world(pg_replay_writer *w, const pg_world *world)
+{
+    uint64_t sections[PG_SECTION_COUNT];
+    if (world == NULL) return PG_ERR_NULL;
+    pg_world_section_hashes(world, sections);
+    return pg_replay_writer_add_checkpoint(w, pg_world_hash(world), sections);
+}
+
+pg_result pg_replay_writer_finish(pg_replay_writer *w, uint64_t final_hash, size_t *size)
+{
+    size_t pos;
+    if (w == NULL || w->buffer == NULL) return PG_ERR_NULL;
+    if (w->finished || pg_replay_writer_checkpoint_due(w)) return PG_ERR_INVALID_ARGUMENT;
+    if (w->capacity - w->size < PG_REPLAY_TRAILER_SIZE) return PG_ERR_MEMORY;
+    pos = w->size;
+    w->buffer[pos] = (uint8_t)PG_REPLAY_TAG_END;
+    put_u32(w->buffer + pos + 1, w->frame_count);
+    put_u64(w->buffer + pos + 5, final_hash);
+    put_u64(w->buffer + pos + 13, hash_range(w->buffer, w->block_start, pos + 13));
+    put_u64(w->buffer + pos + 21, hash_range(w->buffer, 0, pos + 21));
+    w->size = pos + PG_REPLAY_TRAILER_SIZE;
+    w->finished = 1;
+    if (size != NULL) *size = w->size;
+    return PG_OK;
+}
+
+/* ---- reader ------------------------------------------------------------------------------ */
+/* Byte offset within the scene text of a scene error's line and column (from 1). */
+static size_t scene_error_offset(const pg_replay_info *info, const pg_scene_error *se)
+{
+    size_t pos = 0;
+    uint32_t line = 1;
+    if (se->line == 0) return 0;
+    while (line < se->line && pos < info->scene_size) {
+        if (info->scene_text[pos] == '\n') line++;
+        pos++;
+    }
+    if (se->column > 1) {
+        size_t col = se->column - 1u;
+        pos = col <= info->scene_size - pos ? pos + col : info->scene_size;
+    }
+    return pos;
+}
+
+/* Check the scene text with the scene parser; errors name the file offset. */
+static pg_result check_scene(const pg_replay_info *info, pg_world_def *def, pg_replay_error *e)
+{
+    pg_scene_error se;
+    pg_result r = pg_scene_read_def(info->scene_text, info->scene_size, def, &se);
+    if (r != PG_OK) {
+        size_t off = scene_error_offset(info, &se);
+        msg m = set_error(e, info->scene_offset + off, "scene", "text", -1, -1, "scene text does not parse: ");
+        msg_text(&m, se.message);
+        return PG_ERR_INVALID_ARGUMENT;
+    }
+    return PG_OK;
+}
+
+pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error)
+{
+    pg_replay_info in;
+    size_t pos, block_start, scene_size, records_end, i;
+    uint32_t n, sections, frame = 0, checkpoints = 0;
+    uint64_t stored, computed;
+    pg_world_def def;
+    pg_result r;
+
+    clear_error(error);
+    if (data == NULL && size != 0) return PG_ERR_NULL;
+    if (info == NULL) return PG_ERR_NULL;
+    {
+        uint8_t *z = (uint8_t *)info;
+        for (i = 0; i < sizeof *info; ++i) z[i] = 0;
+        z = (uint8_t *)&in;
+        for (i = 0; i < sizeof in; ++i) z[i] = 0;
+    }
+    in.size = size;
+
+    /* header */
+    for (i = 0; i < 8; ++i) {
+        if (i >= size) return truncated(error, size, "header", "magic", -1, 8);
+        if (data[i] != (uint8_t)PG_REPLAY_MAGIC[i]) {
+            set_error(error, i, "header", "magic", -1, -1,
+                      "not a pogon replay file: it must start with the 8 bytes \"PGREPLAY\"");
+            return PG_ERR_INVALID_ARGUMENT;
+        }
+    }
+    if (size < OFF_FORMAT + 2u) return truncated(error, size, "header", "format_version", -1, OFF_FORMAT + 2u);
+    in.format_version = get_u16(data + OFF_FORMAT);
+    if (in.format_version != PG_REPLAY_FORMAT_VERSION)
+        return value_error(error, OFF_FORMAT, "header", "format_version", -1, "format version ", in.format_version,
+                           " is not supported: this build reads version 1");
+    if (size < PG_REPLAY_HEADER_SIZE) return truncated(error, size, "header", "header", -1, PG_REPLAY_HEADER_SIZE);
+    in.engine_major = get_u16(data + OFF_ENGINE_MAJOR);
+    in.engine_minor = get_u16(data + OFF_ENGINE_MINOR);
+    in.engine_patch = get_u16(data + OFF_ENGINE_PATCH);
+    in.flags = get_u32(data + OFF_FLAGS);
+    in.checkpoint_interval = get_u32(data + OFF_INTERVAL);
+    in.section_count = get_u32(data + OFF_SECTIONS);
+    if (in.flags != 0)
+        return value_error(error, OFF_FLAGS, "header", "flags", -1, "flags ", in.flags,
+                           " are not defined in format version 1 (must be 0)");
+    if (in.checkpoint_interval == 0)
+        return value_error(error, OFF_INTERVAL, "header", "checkpoint_interval", -1, "checkpoint interval ", 0,
+                           " is invalid (must be at least 1)");
+    if (in.section_count == 0 || in.section_count > PG_REPLAY_MAX_SECTIONS)
+        return value_error(error, OFF_SECTIONS, "header", "section_count", -1, "section count ", in.section_count,
+                           " is out of range 1..16");
+    stored = get_u64(data + OFF_HEADER_HASH);
+    computed = hash_range(data, 0, OFF_HEADER_HASH);
+    if (stored != computed)
+        return hash_error(error, OFF_HEADER_HASH, "header", "header_hash", -1, "header hash mismatch (bytes 0..31)",
+                          stored, computed);
+
+    /* the file ends with the fixed-size end record */
+    if (size < (size_t)OFF_SCENE_TEXT + 8u + PG_REPLAY_TRAILER_SIZE)
+        return truncated(error, size, "scene", "scene", -1, (size_t)OFF_SCENE_TEXT + 8u + PG_REPLAY_TRAILER_SIZE);
+    records_end = size - PG_REPLAY_TRAILER_SIZE;
+
+    /* scene */
+    scene_size = get_u32(data + OFF_SCENE_SIZE);
+    if (scene_size > records_end - OFF_SCENE_TEXT - 8u) {
+        msg m = set_error(error, OFF_SCENE_SIZE, "header", "scene_size", -1, -1, "scene size ");
+        msg_u64(&m, scene_size);
+        msg_text(&m, " runs past the end of the file (at most ");
+        msg_u64(&m, records_end - OFF_SCENE_TEXT - 8u);
+        msg_text(&m, " bytes fit): the file is truncated or the size is corrupt");
+        return PG_ERR_INVALID_ARGUMENT;
+    }
+    in.scene_text = (const char *)(data + OFF_SCENE_TEXT);
+    in.scene_size = scene_size;
+    in.scene_offset = OFF_SCENE_TEXT;
+    pos = OFF_SCENE_TEXT + scene_size;
+    stored = get_u64(data + pos);
+    computed = hash_range(data, OFF_SCENE_TEXT, pos);
+    if (stored != computed) {
+        msg m = set_error(error, pos, "scene", "scene_hash", -1, -1, "scene hash mismatch (scene text, bytes ");
+        msg_u64(&m, OFF_SCENE_TEXT);
+        msg_text(&m, "..");
+        msg_u64(&m, pos - 1u);
+        msg_text(&m, "): stored ");
+        msg_hex(&m, stored);
+        msg_text(&m, ", computed ");
+        msg_hex(&m, computed);
+        return PG_ERR_INVALID_ARGUMENT;
+    }
+    pos += 8u;
+    in.records_offset = pos;
+    block_start = pos;
+    sections = in.section_count;
+
+    /* records: C(0) F... C(N) F... ... E */
+    for (;;) {
+        int due = frame % in.checkpoint_interval == 0u && checkpoints <= frame / in.checkpoint_interval;
+        uint8_t tag;
+        if (pos >= records_end) {
+            /* the end record must start exactly at records_end */
+            if (due) {
+                msg m = set_error(error, pos, "checkpoint", "tag", (int64_t)frame, -1, "checkpoint ");
+                msg_u64(&m, checkpoints);
+                msg_text(&m, " at frame ");
+                msg_u64(&m, frame);
+                msg_text(&m, " is missing: the end record follows");
+                return PG_ERR_INVALID_ARGUMENT;
+            }
+            break;
+        }
+        tag = data[pos];
+        if (due) {
+            size_t cs = checkpoint_size(sections);
+            if (tag != PG_REPLAY_TAG_CHECKPOINT) {
+                msg m = set_error(error, pos, "checkpoint", "tag", (int64_t)frame, -1, "expected checkpoint ");
+                msg_u64(&m, checkpoints);
+                msg_text(&m, " (tag 'C') at frame ");
+                msg_u64(&m, frame);
+                msg_text(&m, ", found byte ");
+                msg_u64(&m, tag);
+                return PG_ERR_INVALID_ARGUMENT;
+            }
+            if (records_end - pos < cs) return truncated(error, records_end, "checkpoint", "checkpoint", (int64_t)frame, pos + cs);
+            n = get_u32(data + pos + 1);
+            if (n != frame)
+                return value_error(error, pos + 1, "checkpoint", "frame", (int64_t)frame, "checkpoint names frame ", n,
+                                   ", but it follows a different frame record count");
+            stored = get_u64(data + pos + cs - 8u);
+            computed = hash_range(data, block_start, pos + cs - 8u);
+            if (stored != computed) {
+                msg m = set_error(error, pos + cs - 8u, "checkpoint", "block_hash", (int64_t)frame, -1,
+                                  "block hash mismatch (bytes ");
+                msg_u64(&m, block_start);
+                msg_text(&m, "..");
+                msg_u64(&m, pos + cs - 9u);
+                msg_text(&m, ", the records before this checkpoint): stored ");
+                msg_hex(&m, stored);
+                msg_text(&m, ", computed ");
+                msg_hex(&m, computed);
+                return PG_ERR_INVALID_ARGUMENT;
+            }
+            pos += cs;
+            block_start = pos;
+            checkpoints++;
+            continue;
+        }
+        if (tag == PG_REPLAY_TAG_END) break;
+        if (tag != PG_REPLAY_TAG_FRAME) {
+            msg m = set_error(error, pos, "frame", "tag", (int64_t)frame, -1, "expected a frame record (tag 'F') or the end record (tag 'E'), found byte ");
+            msg_u64(&m, tag);
+            return PG_ERR_INVALID_ARGUMENT;
+        }
+        if (frame == 0xFFFFFFFFu)
+            return value_error(error, pos, "frame", "tag", (int64_t)frame, "more than ", 0xFFFFFFFFu, " frames");
+        if (records_end - pos < 3u) return truncated(error, records_end, "frame", "command_count", (int64_t)frame, pos + 3u);
+        n = get_u16(data + pos + 1);
+        pos += 3u;
+        {
+            uint32_t c;
+            for (c = 0; c < n; ++c) {
+                pg_command cmd;
+                size_t used = 0, eoff = 0;
+                const char *efield = NULL;
+                r = pg_command_decode(data + pos, records_end - pos, &cmd, &used, &eoff, &efield);
+                if (r != PG_OK || used == 0 || used > records_end - pos) {
+                    msg m;
+                    if (eoff > records_end - pos) eoff = records_end - pos;
+                    m = set_error(error, pos + eoff, "frame", efield != NULL ? efield : "command", (int64_t)frame,
+                                  (int64_t)c, "command ");
+                    msg_u64(&m, c);
+                    msg_text(&m, " of ");
+                    msg_u64(&m, n);
+                    msg_text(&m, " in frame ");
+                    msg_u64(&m, frame);
+                    msg_text(&m, " does not decode (starts at byte ");
+                    msg_u64(&m, pos);
+                    msg_text(&m, pos + eoff >= records_end ? "; it runs into the end record: truncated?)"
+                                                           : ")");
+                    return PG_ERR_INVALID_ARGUMENT;
+                }
+                if ((unsigned)cmd.kind < PG_CMD_KIND_COUNT) in.kind_counts[cmd.kind]++;
+                pos += used;
+            }
+        }
+        if (n > in.max_frame_commands) in.max_frame_commands = n;
+        in.command_count += n;
+        frame++;
+    }
+    if (pos != records_end) {
+        msg m = set_error(error, pos, "end", "tag", (int64_t)frame, -1, "the end record must be the last ");
+        msg_u64(&m, PG_REPLAY_TRAILER_SIZE);
+        msg_text(&m, " bytes of the file, but it starts at byte ");
+        msg_u64(&m, pos);
+        msg_text(&m, " of ");
+        msg_u64(&m, size);
+        msg_text(&m, pos < records_end ? " (trailing data or a corrupt record)" : " (truncated)");
+        return PG_ERR_INVALID_ARGUMENT;
+    }
+    /* end record */
+    if (data[pos] != PG_REPLAY_TAG_END)
+        return value_error(error, pos, "end", "tag", (int64_t)frame, "expected the end record (tag 'E', 69), found byte ",
+                           data[pos], "");
+    n = get_u32(data + pos + 1);
+    if (n != frame)
+        return value_error(error, pos + 1, "end", "frame_count", (int64_t)frame, "end record counts ", n,
+                           " frames, but a different number of frame records precede it");
+    stored = get_u64(data + pos + 13);
+    computed = hash_range(data, block_start, pos + 13);
+    if (stored != computed)
+        return hash_error(error, pos + 13, "end", "block_hash", (int64_t)frame,
+                          "block hash mismatch (the records after the last checkpoint and the end record)", stored,
+                          computed);
+    stored = get_u64(data + pos + 21);
+    computed = hash_range(data, 0, pos + 21);
+    if (stored != computed)
+        return hash_error(error, pos + 21, "file", "checksum", -1, "file checksum mismatch", stored, computed);
+    in.end_offset = pos;
+    in.frame_count = frame;
+    in.checkpoint_count = checkpoints;
+    in.final_hash = get_u64(data + pos + 5);
+    in.checksum = stored;
+
+    r = check_scene(&in, &def, error);
+    if (r != PG_OK) return r;
+    *info = in;
+    return PG_OK;
+}
+
+/* Offset of checkpoint `index` in a valid file (scans the records). */
+static size_t checkpoint_offset(const uint8_t *data, const pg_replay_info *info, uint32_t index)
+{
+    size_t pos = info->records_offset;
+    uint32_t seen = 0;
+    size_t cs = checkpoint_size(info->section_count);
+    while (pos < info->end_offset) {
+        if (data[pos] == PG_REPLAY_TAG_CHECKPOINT) {
+            if (seen == index) return pos;
+            seen++;
+            pos += cs;
+        } else {
+            uint32_t n = get_u16(data + pos + 1), c;
+            pos += 3u;
+            for (c = 0; c < n; ++c) {
+                pg_command cmd;
+                size_t used = 0;
+                if (pg_command_decode(data + pos, info->end_offset - pos, &cmd, &used, NULL, NULL) != PG_OK || used == 0)
+                    return 0;
+                pos += used;
+            }
+        }
+    }
+    return 0;
+}
+
+static void read_checkpoint(const uint8_t *data, const pg_replay_info *info, size_t off, uint64_t *hash,
+                            uint64_t sections[PG_SECTION_COUNT])
+{
+    unsigned s;
+    if (hash != NULL) *hash = get_u64(data + off + 5);
+    if (sections != NULL) {
+        for (s = 0; s < PG_SECTION_COUNT; ++s)
+            sections[s] = s < info->section_count ? get_u64(data + off + 13 + 8u * s) : 0u;
+    }
+}
+
+pg_result pg_replay_checkpoint(const uint8_t *data, const pg_replay_info *info, uint32_t index, uint64_t *hash,
+                               uint64_t sections[PG_SECTION_COUNT])
+{
+    size_t off;
+    if (data == NULL || info == NULL) return PG_ERR_NULL;
+    if (index >= info->checkpoint_count) return PG_ERR_INVALID_ARGUMENT;
+    off = checkpoint_offset(data, info, index);
+    if (off == 0) return PG_ERR_INVALID_ARGUMENT;
+    read_checkpoint(data, info, off, hash, sections);
+    return PG_OK;
+}
+
+/* Compare the world with the checkpoint record at `off`. */
+static int compare_at(const pg_world *world, const uint8_t *data, const pg_replay_info *info, size_t off,
+                      uint64_t *expected, uint64_t *actual, uint32_t *mismatch)
+{
+    uint64_t want, have, want_s[PG_SECTION_COUNT], have_s[PG_SECTION_COUNT];
+    uint32_t mask = 0;
+    unsigned s;
+    read_checkpoint(data, info, off, &want, want_s);
+    have = pg_world_hash(world);
+    pg_world_section_hashes(world, have_s);
+    for (s = 0; s < PG_SECTION_COUNT && s < info->section_count; ++s) {
+        if (want_s[s] != have_s[s]) mask |= 1u << s;
+    }
+    if (expected != NULL) *expected = want;
+    if (actual != NULL) *actual = have;
+    if (mismatch != NULL) *mismatch = mask;
+    return want == have;
+}
+
+int pg_replay_compare_checkpoint(const pg_world *world, const uint8_t *data, const pg_replay_info *info, uint32_t index,
+                                 uint64_t *expected, uint64_t *actual, uint32_t *section_mismatch)
+{
+    size_t off;
+    if (world == NULL || data == NULL || info == NULL || index >= info->checkpoint_count) return 0;
+    off = checkpoint_offset(data, info, index);
+    if (off == 0) return 0;
+    return compare_at(world, data, info, off, expected, actual, section_mismatch);
+}
+
+/* ---- player ------------------------------------------------------------------------------ */
+pg_result pg_replay_world_memory_size(const pg_replay_info *info, size_t *size, pg_replay_error *error)
+{
+    pg_world_def def;
+    pg_result r;
+    if (info == NULL || size == NULL) return PG_ERR_NULL;
+    *size = 0;
+    clear_error(error);
+    r = check_scene(info, &def, error);
+    if (r != PG_OK) return r;
+    *size = pg_world_memory_size(&def);
+    if (*size == 0) {
+        set_error(error, info->scene_offset, "scene", "text", -1, -1, "the scene's world settings are invalid");
+        return PG_ERR_INVALID_ARGUMENT;
+    }
+    return PG_OK;
+}
+
+pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const pg_replay_info *info, void *memory,
+                                 size_t memory_size, pg_replay_frame_result *first, pg_replay_error *error)
+{
+    pg_world_def def;
+    pg_scene_error se;
+    pg_result r;
+    if (p == NULL || data == NULL || info == NULL || memory == NULL) return PG_ERR_NULL;
+    clear_error(error);
+    p->data = data;
+    p->info = *info;
+    p->world = NULL;
+    p->cursor = info->records_offset;
+    p->frame = 0;
+    p->checkpoints_checked = 0;
+    p->command_failures = 0;
+    r = check_scene(info, &def, error);
+    if (r != PG_OK) return r;
+    r = pg_world_create(&def, memory, memory_size, &p->world);
+    if (r != PG_OK) {
+        msg m = set_error(error, info->scene_offset, "scene", "text", -1, -1, "cannot create the scene's world: ");
+        msg_text(&m, pg_result_name(r));
+        p->world = NULL;
+        return r == PG_ERR_MEMORY ? PG_ERR_MEMORY : PG_ERR_INVALID_ARGUMENT;
+    }
+    r = pg_scene_load(p->world, info->scene_text, info->scene_size, &se);
+    if (r != PG_OK) {
+        size_t off = scene_error_offset(info, &se);
+        msg m = set_error(error, info->scene_offset + off, "scene", "text", -1, -1, "scene does not load: ");
+        msg_text(&m, se.message);
+        p->world = NULL;
+        return PG_ERR_INVALID_ARGUMENT;
+    }
+    /* checkpoint 0 */
+    if (first != NULL) {
+        uint8_t *z = (uint8_t *)first;
+        size_t i;
+        for (i = 0; i < sizeof *first; ++i) z[i] = 0;
+        first->checkpoint = 1;
+        first->checkpoint_index = 0;
+        first->match = compare_at(p->world, data, info, p->cursor, &first->expected_hash, &first->actual_hash,
+                                  &first->section_mismatch);
+    }
+    p->cursor += checkpoint_size(info->section_count);
+    p->checkpoints_checked = 1;
+    return PG_OK;
+}
+
+int pg_replay_player_done(const pg_replay_player *p)
+{
+    return p == NULL || p->world == NULL || p->frame >= p->info.frame_count;
+}
+
+/* Apply the commands of the frame record at `off` (already validated); returns the
+ * offset after it. */
+static size_t apply_frame_at(pg_world *world, const uint8_t *data, size_t end, size_t off, uint32_t *applied,
+                             uint32_t *failures)
+{
+    uint32_t n = get_u16(data + off + 1), c, fails = 0;
+    size_t pos = off + 3u;
+    for (c = 0; c < n; ++c) {
+        pg_command cmd;
+        size_t used = 0;
+        if (pg_command_decode(data + pos, end - pos, &cmd, &used, NULL, NULL) != PG_OK || used == 0) break;
+        if (pg_command_apply(world, &cmd, NULL) != PG_OK) fails++;
+        pos += used;
+    }
+    if (applied != NULL) *applied = c;
+    if (failures != NULL) *failures = fails;
+    return pos;
+}
+
+pg_result pg_replay_apply_frame(pg_world *world, const uint8_t *data, const pg_replay_info *info, size_t record_offset,
+                                uint32_t *applied, uint32_t *failures)
+{
+    if (world == NULL || data == NULL || info == NULL) return PG_ERR_NULL;
+    if (record_offset < info->records_offset || record_offset + 3u > info->end_offset ||
+        data[record_offset] != PG_REPLAY_TAG_FRAME)
+        return PG_ERR_INVALID_ARGUMENT;
+    apply_frame_at(world, data, info->end_offset, record_offset, applied, failures);
+    return PG_OK;
+}
+
+pg_result pg_replay_player_step(pg_replay_player *p, pg_replay_frame_result *out)
+{
+    pg_replay_frame_result fr;
+    uint8_t *z = (uint8_t *)&fr;
+    size_t i;
+    pg_result r;
+    if (p == NULL) return PG_ERR_NULL;
+    if (pg_replay_player_done(p) || p->cursor >= p->info.end_offset || p->data[p->cursor] != PG_REPLAY_TAG_FRAME)
+        return PG_ERR_INVALID_ARGUMENT;
+    for (i = 0; i < sizeof fr; ++i) z[i] = 0;
+    fr.frame = p->frame;
+    fr.record_offset = p->cursor;
+    fr.match = 1;
+    p->cursor = apply_frame_at(p->world, p->data, p->info.end_offset, p->cursor, &fr.command_count, &fr.command_failures);
+    p->command_failures += fr.command_failures;
+    r = pg_world_step(p->world);
+    p->frame++;
+    if (p->frame % p->info.checkpoint_interval == 0u && p->cursor < p->info.end_offset &&
+        p->data[p->cursor] == PG_REPLAY_TAG_CHECKPOINT) {
+        fr.checkpoint = 1;
+        fr.checkpoint_index = p->checkpoints_checked;
+        fr.match = compare_at(p->world, p->data, &p->info, p->cursor, &fr.expected_hash, &fr.actual_hash,
+                              &fr.section_mismatch);
+        p->cursor += checkpoint_size(p->info.section_count);
+        p->checkpoints_checked++;
+    }
+    if (out != NULL) *out = fr;
+    return r;
+}

@@ -1,0 +1,1461 @@
+/* scene_file.c — the pogon scene text format (docs/formats.md, "Scene files"):
+ * a reader that checks everything and a writer of the current state.
+ *
+ * READER
+ *   One pass over the text, line by line, token by token, with a cursor that never
+ *   passes `length`. No allocation, no recursion, no NUL needed. The same pass runs in
+ *   two modes: READ (world == NULL) collects the settings, counts bodies and shapes and
+ *   checks every value it can without a world (ranges, geometry through pg_geometry_*);
+ *   LOAD repeats it and makes the bodies. pg_scene_load runs READ first, so text errors
+ *   are found before anything is created.
+ *
+ * WRITER
+ *   The world's def, then every used body slot as a `body` block. Values that equal the
+ *   defaults are left out; numbers are shortest exact decimals (pg_fix_format). It reads
+ *   the pools directly (world_internal.h): flags such as allow_sleep have no getter.
+ */
+#include "pogon/scene_file.h"
+#include "world_internal.h"
+
+/* ---- small text helpers ------------------------------------------------------------------ */
+typedef struct text_out {
+    char *buf;
+    size_t cap, len;
+} text_out;
+
+static void put_char(text_out *o, char c)
+{
+    if (o->buf != NULL && o->len + 1u < o->cap) o->buf[o->len] = c;
+    o->len += 1u;
+}
+
+static void put_str(text_out *o, const char *s)
+{
+    while (*s != '\0') put_char(o, *s++);
+}
+
+static void put_u64(text_out *o, uint64_t v)
+{
+    char rev[24];
+    int n = 0;
+    do {
+        rev[n++] = (char)('0' + (int)(v % 10u));
+        v /= 10u;
+    } while (v != 0);
+    while (n > 0) put_char(o, rev[--n]);
+}
+
+static void put_hex(text_out *o, uint64_t v)
+{
+    static const char digits[] = "0123456789abcdef";
+    char rev[20];
+    int n = 0;
+    do {
+        rev[n++] = digits[v & 15u];
+        v >>= 4;
+    } while (v != 0);
+    put_str(o, "0x");
+    while (n > 0) put_char(o, rev[--n]);
+}
+
+static void put_fix(text_out *o, pg_fix v)
+{
+    char num[PG_FIX_FORMAT_MAX];
+    pg_fix_format(v, num, sizeof num);
+    put_str(o, num);
+}
+
+/* Terminate: the NUL goes at min(len, cap - 1). */
+static void finish_out(text_out *o)
+{
+    if (o->buf != NULL && o->cap > 0) o->buf[o->len < o->cap - 1u ? o->len : o->cap - 1u] = '\0';
+}
+
+/* ---- angles ---------------------------------------------------------------------------------- */
+pg_angle pg_scene_angle_from_degrees(pg_fix degrees)
+{
+    /* degrees * 2^32 / 360 from Q16.16: x = degrees * 2^16 (|x| < 2^47), rounded x / 360 */
+    int64_t x = (int64_t)degrees * 65536;
+    int64_t magnitude = x < 0 ? -x : x;
+    uint32_t q = (uint32_t)((uint64_t)((magnitude + 180) / 360) & 0xFFFFFFFFu);
+    return x < 0 ? (pg_angle)(0u - q) : (pg_angle)q;
+}
+
+/* The Q16.16 degrees nearest to a binary angle, in [-180, 180). */
+static pg_fix degrees_from_angle(pg_angle a)
+{
+    int64_t s = a >= 0x80000000u ? (int64_t)a - (INT64_C(1) << 32) : (int64_t)a;
+    return (pg_fix)pg__round_shift64(s * 360, 16);
+}
+
+/* ---- the reader's state --------------------------------------------------------------------- */
+enum { MODE_READ = 0, MODE_LOAD = 1 };
+
+/* Properties. A slot is what "given twice" is checked on (angle and angle_bits share one). */
+enum prop_id {
+    P_STEP_HZ, P_SUBSTEPS, P_GRAVITY, P_EFFECTS, P_MAX_BODIES, P_MAX_SHAPES, P_MAX_CONTACTS,
+    P_CONTACT_HERTZ, P_CONTACT_DAMPING_RATIO, P_CONTACT_PUSH_MAX, P_RESTITUTION_THRESHOLD,
+    P_MAX_LINEAR_SPEED, P_SLEEP_LINEAR_TOLERANCE, P_SLEEP_ANGULAR_TOLERANCE, P_TIME_TO_SLEEP,
+    P_TYPE, P_POSITION, P_ANGLE, P_LINEAR_VELOCITY, P_ANGULAR_VELOCITY, P_LINEAR_DAMPING,
+    P_ANGULAR_DAMPING, P_GRAVITY_SCALE, P_FIXED_ROTATION, P_ALLOW_SLEEP, P_AWAKE, P_USER_DATA,
+    P_DENSITY, P_FRICTION, P_RESTITUTION, P_CATEGORY, P_MASK, P_OFFSET,
+    P_ANGLE_BITS, /* shares the slot of P_ANGLE */
+    P_COUNT
+};
+#define SETTING_COUNT (P_TIME_TO_SLEEP + 1)
+
+/* Where a property may appear. */
+enum {
+    CTX_SETTING = 1u << 0,
+    CTX_BODY = 1u << 1,       /* body line, body block, ready-made line */
+    CTX_TYPE = 1u << 2,       /* `type` on a ready-made line */
+    CTX_MATERIAL = 1u << 3,   /* shape lines and ready-made lines */
+    CTX_OFFSET = 1u << 4,     /* circle and box shapes */
+    CTX_SHAPE_ANGLE = 1u << 5 /* box shapes */
+};
+
+typedef struct prop_info {
+    const char *name;
+    uint8_t id, slot, ctx;
+} prop_info;
+
+static const prop_info props_table[] = {
+    {"step_hz", P_STEP_HZ, P_STEP_HZ, CTX_SETTING},
+    {"substeps", P_SUBSTEPS, P_SUBSTEPS, CTX_SETTING},
+    {"gravity", P_GRAVITY, P_GRAVITY, CTX_SETTING},
+    {"effects", P_EFFECTS, P_EFFECTS, CTX_SETTING},
+    {"max_bodies", P_MAX_BODIES, P_MAX_BODIES, CTX_SETTING},
+    {"max_shapes", P_MAX_SHAPES, P_MAX_SHAPES, CTX_SETTING},
+    {"max_contacts", P_MAX_CONTACTS, P_MAX_CONTACTS, CTX_SETTING},
+    {"contact_hertz", P_CONTACT_HERTZ, P_CONTACT_HERTZ, CTX_SETTING},
+    {"contact_damping_ratio", P_CONTACT_DAMPING_RATIO, P_CONTACT_DAMPING_RATIO, CTX_SETTING},
+    {"contact_push_max", P_CONTACT_PUSH_MAX, P_CONTACT_PUSH_MAX, CTX_SETTING},
+    {"restitution_threshold", P_RESTITUTION_THRESHOLD, P_RESTITUTION_THRESHOLD, CTX_SETTING},
+    {"max_linear_speed", P_MAX_LINEAR_SPEED, P_MAX_LINEAR_SPEED, CTX_SETTING},
+    {"sleep_linear_tolerance", P_SLEEP_LINEAR_TOLERANCE, P_SLEEP_LINEAR_TOLERANCE, CTX_SETTING},
+    {"sleep_angular_tolerance", P_SLEEP_ANGULAR_TOLERANCE, P_SLEEP_ANGULAR_TOLERANCE, CTX_SETTING},
+    {"time_to_sleep", P_TIME_TO_SLEEP, P_TIME_TO_SLEEP, CTX_SETTING},
+    {"type", P_TYPE, P_TYPE, CTX_TYPE},
+    {"position", P_POSITION, P_POSITION, CTX_BODY},
+    {"angle", P_ANGLE, P_ANGLE, CTX_BODY | CTX_SHAPE_ANGLE},
+    {"angle_bits", P_ANGLE_BITS, P_ANGLE, CTX_BODY | CTX_SHAPE_ANGLE},
+    {"linear_velocity", P_LINEAR_VELOCITY, P_LINEAR_VELOCITY, CTX_BODY},
+    {"angular_velocity", P_ANGULAR_VELOCITY, P_ANGULAR_VELOCITY, CTX_BODY},
+    {"linear_damping", P_LINEAR_DAMPING, P_LINEAR_DAMPING, CTX_BODY},
+    {"angular_damping", P_ANGULAR_DAMPING, P_ANGULAR_DAMPING, CTX_BODY},
+    {"gravity_scale", P_GRAVITY_SCALE, P_GRAVITY_SCALE, CTX_BODY},
+    {"fixed_rotation", P_FIXED_ROTATION, P_FIXED_ROTATION, CTX_BODY},
+    {"allow_sleep", P_ALLOW_SLEEP, P_ALLOW_SLEEP, CTX_BODY},
+    {"awake", P_AWAKE, P_AWAKE, CTX_BODY},
+    {"user_data", P_USER_DATA, P_USER_DATA, CTX_BODY},
+    {"density", P_DENSITY, P_DENSITY, CTX_MATERIAL},
+    {"friction", P_FRICTION, P_FRICTION, CTX_MATERIAL},
+    {"restitution", P_RESTITUTION, P_RESTITUTION, CTX_MATERIAL},
+    {"category", P_CATEGORY, P_CATEGORY, CTX_MATERIAL},
+    {"mask", P_MASK, P_MASK, CTX_MATERIAL},
+    {"offset", P_OFFSET, P_OFFSET, CTX_OFFSET},
+};
+#define PROPS_TABLE_COUNT (sizeof props_table / sizeof props_table[0])
+
+static const char *const effect_names[7] = {"gravity", "rotation", "friction", "restitution", "damping", "sleeping", "continuous"};
+static const char *const type_names[3] = {"static", "kinematic", "dynamic"};
+
+/* The six ready-made kinds: keyword, number of sizes and their names. */
+typedef struct make_info {
+    const char *name;
+    int sizes;
+    const char *size_names[2];
+    uint32_t shapes;
+} make_info;
+static const make_info make_table[6] = {
+    {"ball", 1, {"radius", NULL}, 1},
+    {"capsule", 2, {"length", "radius"}, 1},
+    {"box", 2, {"width", "height"}, 1},
+    {"triangle", 1, {"circumradius", NULL}, 1},
+    {"star", 1, {"circumradius", NULL}, 2},
+    {"wall", 2, {"width", "height"}, 1},
+};
+
+/* A token: [start, start + len) of the text; len 0 means "end of line". */
+typedef struct token {
+    size_t start, len;
+} token;
+
+/* Values of the properties of one statement (a body, a shape line, a ready-made line). */
+typedef struct props {
+    uint64_t seen;            /* bit per slot */
+    uint32_t line[P_COUNT], column[P_COUNT]; /* where each property's first value is */
+    pg_body_def bd;
+    pg_shape_def sd;
+    pg_vec2 offset;
+    pg_angle angle;
+} props;
+
+typedef struct scene_parser {
+    const char *text;
+    size_t length;
+    int mode;
+    pg_world *world;
+    pg_scene_error *error;
+    pg_scene_error scratch_error; /* when the caller passed NULL */
+    pg_result result;
+
+    /* the current line: [line_start, line_end), content before any '#' ends at content_end */
+    size_t next_line, line_start, line_end, content_end, at, last_end;
+    uint32_t line;
+
+    pg_world_def def;
+    uint64_t settings_seen;
+    uint32_t setting_line[SETTING_COUNT], setting_column[SETTING_COUNT];
+    int bodies_started;
+    uint32_t bodies, shapes;
+
+    /* the open body block */
+    int in_body;
+    uint32_t body_line;
+    props body;
+    uint32_t body_shapes;
+    int body_made;
+    pg_body_id body_id;
+} scene_parser;
+
+/* ---- errors ------------------------------------------------------------------------------------ */
+typedef struct msg {
+    char *p;
+    size_t cap, len;
+} msg;
+
+static void msg_put(msg *m, const char *s)
+{
+    while (*s != '\0') {
+        if (m->len + 1u < m->cap) m->p[m->len++] = *s;
+        ++s;
+    }
+    m->p[m->len] = '\0';
+}
+
+static void msg_u64(msg *m, uint64_t v)
+{
+    char rev[24], one[2];
+    int n = 0;
+    do {
+        rev[n++] = (char)('0' + (int)(v % 10u));
+        v /= 10u;
+    } while (v != 0);
+    one[1] = '\0';
+    while (n > 0) {
+        one[0] = rev[--n];
+        msg_put(m, one);
+    }
+}
+
+static void msg_fix(msg *m, pg_fix v)
+{
+    char num[PG_FIX_FORMAT_MAX];
+    pg_fix_format(v, num, sizeof num);
+    msg_put(m, num);
+}
+
+/* 'token' (cut at 24 bytes) or "end of line". Tokens hold printable ASCII only. */
+static void msg_token(msg *m, const scene_parser *P, token t)
+{
+    char buf[32];
+    size_t i, n = t.len < 24u ? t.len : 24u;
+    if (t.len == 0) {
+        msg_put(m, "end of line");
+        return;
+    }
+    buf[0] = '\'';
+    for (i = 0; i < n; ++i) buf[1 + i] = P->text[t.start + i];
+    buf[1 + n] = '\0';
+    msg_put(m, buf);
+    msg_put(m, t.len > n ? "...'" : "'");
+}
+
+static uint32_t sat_u32(size_t v) { return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v; }
+
+static uint32_t column_at(const scene_parser *P, size_t pos) { return sat_u32(pos - P->line_start + 1u); }
+
+/* The column of a token, or for "end of line" the column just past the last token. */
+static uint32_t token_column(const scene_parser *P, token t)
+{
+    return column_at(P, t.len == 0 ? P->last_end : t.start);
+}
+
+/* Start an error at (current line, column): the message gets its position prefix. */
+static msg fail(scene_parser *P, pg_result r, uint32_t column)
+{
+    msg m;
+    P->result = r;
+    P->error->line = P->line;
+    P->error->column = column;
+    m.p = P->error->message;
+    m.cap = sizeof P->error->message;
+    m.len = 0;
+    m.p[0] = '\0';
+    if (P->line != 0) {
+        msg_put(&m, "line ");
+        msg_u64(&m, P->line);
+        msg_put(&m, ", column ");
+        msg_u64(&m, column);
+        msg_put(&m, ": ");
+    }
+    return m;
+}
+
+/* "expected <what>, got <token>" */
+static pg_result fail_expected(scene_parser *P, token t, const char *what, const char *name, const char *part)
+{
+    msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+    msg_put(&m, "expected ");
+    msg_put(&m, what);
+    if (name != NULL) {
+        msg_put(&m, " for '");
+        msg_put(&m, name);
+        msg_put(&m, "'");
+    }
+    if (part != NULL) {
+        msg_put(&m, " (");
+        msg_put(&m, part);
+        msg_put(&m, ")");
+    }
+    msg_put(&m, ", got ");
+    msg_token(&m, P, t);
+    return P->result;
+}
+
+/* "'name' is <value>, outside <range>" */
+static pg_result fail_range(scene_parser *P, uint32_t column, const char *name, pg_fix value, const char *range)
+{
+    msg m = fail(P, PG_ERR_ENVELOPE, column);
+    msg_put(&m, "'");
+    msg_put(&m, name);
+    msg_put(&m, "' is ");
+    msg_fix(&m, value);
+    msg_put(&m, ", outside ");
+    msg_put(&m, range);
+    return P->result;
+}
+
+/* ---- lines and tokens ---------------------------------------------------------------------------- */
+static int is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+/* Move to the next line. Returns 0 at the end of the text, -1 after an error (a byte that
+ * is not text before the comment), 1 otherwise. */
+static int load_line(scene_parser *P)
+{
+    size_t i;
+    if (P->next_line > P->length) return 0;
+    P->line_start = P->next_line;
+    for (i = P->line_start; i < P->length && P->text[i] != '\n'; ++i) {}
+    P->line_end = i;
+    P->next_line = i + 1u;
+    for (i = P->line_start; i < P->line_end && P->text[i] != '#'; ++i) {}
+    P->content_end = i;
+    P->at = P->line_start;
+    P->last_end = P->line_start;
+    if (P->line < 0xFFFFFFFFu) P->line += 1u;
+    for (i = P->line_start; i < P->content_end; ++i) {
+        unsigned char c = (unsigned char)P->text[i];
+        if (!is_space((char)c) && (c < 0x21u || c > 0x7Eu)) {
+            static const char hex[] = "0123456789abcdef";
+            char code[5];
+            msg m = fail(P, PG_ERR_INVALID_ARGUMENT, column_at(P, i));
+            code[0] = '0';
+            code[1] = 'x';
+            code[2] = hex[c >> 4];
+            code[3] = hex[c & 15u];
+            code[4] = '\0';
+            msg_put(&m, "unexpected byte ");
+            msg_put(&m, code);
+            msg_put(&m, ": a scene file is ASCII text (anything may follow a '#')");
+            return -1;
+        }
+    }
+    return 1;
+}
+
+static token next_token(scene_parser *P)
+{
+    token t;
+    while (P->at < P->content_end && is_space(P->text[P->at])) ++P->at;
+    t.start = P->at;
+    while (P->at < P->content_end && !is_space(P->text[P->at])) ++P->at;
+    t.len = P->at - t.start;
+    if (t.len != 0) P->last_end = P->at;
+    return t;
+}
+
+static token peek_token(scene_parser *P)
+{
+    size_t at = P->at, last = P->last_end;
+    token t = next_token(P);
+    P->at = at;
+    P->last_end = last;
+    return t;
+}
+
+static int token_is(const scene_parser *P, token t, const char *word)
+{
+    size_t i;
+    for (i = 0; i < t.len; ++i)
+        if (word[i] == '\0' || word[i] != P->text[t.start + i]) return 0;
+    return word[t.len] == '\0' && t.len != 0;
+}
+
+/* Does the token start like a number (so a vertex list goes on)? */
+static int looks_numeric(const scene_parser *P, token t)
+{
+    char c = t.len != 0 ? P->text[t.start] : 'x';
+    return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.';
+}
+
+static pg_result expect_end_of_line(scene_parser *P, const char *after)
+{
+    token t = next_token(P);
+    msg m;
+    if (t.len == 0) return PG_OK;
+    m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+    msg_put(&m, "unexpected ");
+    msg_token(&m, P, t);
+    msg_put(&m, " after ");
+    msg_put(&m, after);
+    return P->result;
+}
+
+/* ---- values -------------------------------------------------------------------------------------- */
+static pg_result read_fix(scene_parser *P, const char *name, const char *part, pg_fix *out, uint32_t *column)
+{
+    token t = next_token(P);
+    pg_fix_status s;
+    if (column != NULL) *column = token_column(P, t);
+    if (t.len == 0) return fail_expected(P, t, "a number", name, part);
+    s = pg_fix_parse(P->text + t.start, t.len, out);
+    if (s == PG_FIX_SYNTAX) return fail_expected(P, t, "a number", name, part);
+    if (s != PG_FIX_OK) {
+        msg m = fail(P, PG_ERR_ENVELOPE, token_column(P, t));
+        msg_put(&m, "number out of range for '");
+        msg_put(&m, name);
+        msg_put(&m, "': ");
+        msg_token(&m, P, t);
+        msg_put(&m, " (Q16.16 holds -32767.99998..32767.99998)");
+        return P->result;
+    }
+    return PG_OK;
+}
+
+/* Unsigned integer, decimal or 0x hex, at most `max`. */
+static pg_result read_uint(scene_parser *P, const char *name, uint64_t max, uint64_t *out, uint32_t *column)
+{
+    token t = next_token(P);
+    size_t i = 0;
+    uint64_t v = 0;
+    int base = 10, overflow = 0;
+    if (column != NULL) *column = token_column(P, t);
+    if (t.len >= 2 && P->text[t.start] == '0' && (P->text[t.start + 1] == 'x' || P->text[t.start + 1] == 'X')) {
+        base = 16;
+        i = 2;
+    }
+    if (i >= t.len) return fail_expected(P, t, "an integer", name, NULL);
+    for (; i < t.len; ++i) {
+        char c = P->text[t.start + i];
+        uint64_t d;
+        if (c >= '0' && c <= '9') d = (uint64_t)(c - '0');
+        else if (base == 16 && c >= 'a' && c <= 'f') d = (uint64_t)(c - 'a' + 10);
+        else if (base == 16 && c >= 'A' && c <= 'F') d = (uint64_t)(c - 'A' + 10);
+        else return fail_expected(P, t, base == 16 ? "a hexadecimal integer" : "an integer", name, NULL);
+        if (v > (UINT64_MAX - d) / (uint64_t)base) overflow = 1;
+        else v = v * (uint64_t)base + d;
+    }
+    if (overflow || v > max) {
+        msg m = fail(P, PG_ERR_ENVELOPE, token_column(P, t));
+        msg_put(&m, "integer out of range for '");
+        msg_put(&m, name);
+        msg_put(&m, "': ");
+        msg_token(&m, P, t);
+        msg_put(&m, " (at most ");
+        msg_u64(&m, max);
+        msg_put(&m, ")");
+        return P->result;
+    }
+    *out = v;
+    return PG_OK;
+}
+
+static pg_result read_u32(scene_parser *P, const char *name, uint32_t lo, uint32_t hi, uint32_t *out)
+{
+    uint64_t v = 0;
+    uint32_t column = 0;
+    pg_result r = read_uint(P, name, 0xFFFFFFFFu, &v, &column);
+    if (r != PG_OK) return r;
+    if (v < lo || v > hi) {
+        msg m = fail(P, PG_ERR_ENVELOPE, column);
+        msg_put(&m, "'");
+        msg_put(&m, name);
+        msg_put(&m, "' is ");
+        msg_u64(&m, v);
+        msg_put(&m, ", outside ");
+        msg_u64(&m, lo);
+        msg_put(&m, "..");
+        msg_u64(&m, hi);
+        return P->result;
+    }
+    *out = (uint32_t)v;
+    return PG_OK;
+}
+
+static pg_result read_flag(scene_parser *P, const char *name, int *out)
+{
+    token t = next_token(P);
+    if (token_is(P, t, "0")) *out = 0;
+    else if (token_is(P, t, "1")) *out = 1;
+    else return fail_expected(P, t, "0 or 1", name, NULL);
+    return PG_OK;
+}
+
+/* A number within [lo, hi]; lo_open / hi_open exclude the bound. */
+static pg_result read_fix_in(scene_parser *P, const char *name, const char *part, pg_fix lo, pg_fix hi, int lo_open,
+                             const char *range, pg_fix *out)
+{
+    uint32_t column = 0;
+    pg_result r = read_fix(P, name, part, out, &column);
+    if (r != PG_OK) return r;
+    if (*out < lo || *out > hi || (lo_open && *out == lo)) return fail_range(P, column, name, *out, range);
+    return PG_OK;
+}
+
+static pg_result read_type(scene_parser *P, const char *name, pg_body_type *out)
+{
+    token t = next_token(P);
+    int i;
+    for (i = 0; i < 3; ++i)
+        if (token_is(P, t, type_names[i])) {
+            *out = (pg_body_type)i;
+            return PG_OK;
+        }
+    return fail_expected(P, t, "static, kinematic or dynamic", name, NULL);
+}
+
+static int effect_bit(const scene_parser *P, token t)
+{
+    int i;
+    for (i = 0; i < 7; ++i)
+        if (token_is(P, t, effect_names[i])) return i;
+    return -1;
+}
+
+/* effects all | none | 0xBITS | NAME... */
+static pg_result read_effects(scene_parser *P, uint32_t *out)
+{
+    token t = peek_token(P);
+    uint32_t bits = 0;
+    if (token_is(P, t, "all") || token_is(P, t, "none")) {
+        (void)next_token(P);
+        *out = token_is(P, t, "all") ? PG_EFFECTS_ALL : 0u;
+        return PG_OK;
+    }
+    if (t.len != 0 && P->text[t.start] >= '0' && P->text[t.start] <= '9') {
+        uint64_t v = 0;
+        uint32_t column = 0;
+        pg_result r = read_uint(P, "effects", 0xFFFFFFFFu, &v, &column);
+        if (r != PG_OK) return r;
+        if ((v & ~(uint64_t)PG_EFFECTS_ALL) != 0) {
+            msg m = fail(P, PG_ERR_ENVELOPE, column);
+            msg_put(&m, "'effects' has bits outside 0x7f (gravity 0x1 .. continuous 0x40)");
+            return P->result;
+        }
+        *out = (uint32_t)v;
+        return PG_OK;
+    }
+    if (effect_bit(P, t) < 0)
+        return fail_expected(P, t, "all, none, an integer or effect names (gravity rotation friction restitution damping sleeping continuous)", "effects", NULL);
+    while (effect_bit(P, t) >= 0) {
+        bits |= 1u << effect_bit(P, t);
+        (void)next_token(P);
+        t = peek_token(P);
+    }
+    *out = bits;
+    return PG_OK;
+}
+
+/* ---- properties ------------------------------------------------------------------------------------ */
+static const char *prop_name(int id)
+{
+    size_t i;
+    for (i = 0; i < PROPS_TABLE_COUNT; ++i)
+        if (props_table[i].id == id) return props_table[i].name;
+    return "?";
+}
+
+static const prop_info *find_prop(const scene_parser *P, token t)
+{
+    size_t i;
+    for (i = 0; i < PROPS_TABLE_COUNT; ++i)
+        if (token_is(P, t, props_table[i].name)) return &props_table[i];
+    return NULL;
+}
+
+static void props_init(props *pr, pg_body_type type)
+{
+    size_t i;
+    pr->seen = 0;
+    for (i = 0; i < P_COUNT; ++i) pr->line[i] = pr->column[i] = 0;
+    pr->bd = pg_default_body_def();
+    pr->bd.type = type;
+    pr->sd = pg_default_shape_def();
+    pr->offset = pg_v2_zero();
+    pr->angle = 0;
+}
+
+#define POS_LIMIT "-1000..1000 m"
+
+/* A world setting; the value goes into P->def. */
+static pg_result read_setting(scene_parser *P, const prop_info *info)
+{
+    pg_world_def *d = &P->def;
+    const char *n = info->name;
+    switch (info->id) {
+    case P_STEP_HZ: return read_u32(P, n, 1, 1000, &d->step_hz);
+    case P_SUBSTEPS: return read_u32(P, n, 1, 16, &d->substeps);
+    case P_GRAVITY: {
+        pg_result r = read_fix_in(P, n, "x", -PG_FIX_C(1000), PG_FIX_C(1000), 0, "-1000..1000 m/s^2", &d->gravity.x);
+        return r != PG_OK ? r : read_fix_in(P, n, "y", -PG_FIX_C(1000), PG_FIX_C(1000), 0, "-1000..1000 m/s^2", &d->gravity.y);
+    }
+    case P_EFFECTS: return read_effects(P, &d->effects);
+    case P_MAX_BODIES: return read_u32(P, n, 1, 1u << 24, &d->max_bodies);
+    case P_MAX_SHAPES: return read_u32(P, n, 1, 1u << 24, &d->max_shapes);
+    case P_MAX_CONTACTS: return read_u32(P, n, 1, 1u << 24, &d->max_contacts);
+    case P_CONTACT_HERTZ: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 1, "(0, 1000] Hz", &d->contact_hertz);
+    case P_CONTACT_DAMPING_RATIO: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 0, "0..1000", &d->contact_damping_ratio);
+    case P_CONTACT_PUSH_MAX: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 1, "(0, 1000] m/s", &d->contact_push_max);
+    case P_RESTITUTION_THRESHOLD: return read_fix_in(P, n, NULL, 0, PG_FIX_MAX, 0, ">= 0 m/s", &d->restitution_threshold);
+    case P_MAX_LINEAR_SPEED: return read_fix_in(P, n, NULL, 0, PG_FIX_C(4096), 1, "(0, 4096] m/s", &d->max_linear_speed);
+    case P_SLEEP_LINEAR_TOLERANCE: return read_fix_in(P, n, NULL, 0, PG_FIX_MAX, 0, ">= 0 m/s", &d->sleep_linear_tolerance);
+    case P_SLEEP_ANGULAR_TOLERANCE: return read_fix_in(P, n, NULL, 0, PG_FIX_MAX, 0, ">= 0 rad/s", &d->sleep_angular_tolerance);
+    default: return read_fix_in(P, n, NULL, 0, PG_FIX_MAX, 0, ">= 0 s", &d->time_to_sleep);
+    }
+}
+
+/* A body, material or shape-placement property; the value goes into *pr. */
+static pg_result read_prop(scene_parser *P, const prop_info *info, props *pr)
+{
+    const char *n = info->name;
+    pg_result r = PG_OK;
+    uint64_t v = 0;
+    switch (info->id) {
+    case P_TYPE: return read_type(P, n, &pr->bd.type);
+    case P_POSITION:
+        r = read_fix_in(P, n, "x", -PG_ENV_MAX_POSITION, PG_ENV_MAX_POSITION, 0, POS_LIMIT, &pr->bd.position.x);
+        return r != PG_OK ? r : read_fix_in(P, n, "y", -PG_ENV_MAX_POSITION, PG_ENV_MAX_POSITION, 0, POS_LIMIT, &pr->bd.position.y);
+    case P_ANGLE: {
+        pg_fix degrees = 0;
+        r = read_fix(P, n, "degrees", &degrees, NULL);
+        pr->angle = pg_scene_angle_from_degrees(degrees);
+        return r;
+    }
+    case P_ANGLE_BITS:
+        r = read_uint(P, n, 0xFFFFFFFFu, &v, NULL);
+        pr->angle = (pg_angle)(v & 0xFFFFFFFFu);
+        return r;
+    case P_LINEAR_VELOCITY:
+        r = read_fix(P, n, "x", &pr->bd.linear_velocity.x, NULL);
+        return r != PG_OK ? r : read_fix(P, n, "y", &pr->bd.linear_velocity.y, NULL);
+    case P_ANGULAR_VELOCITY:
+        return read_fix_in(P, n, NULL, -PG_FIX_C(1000), PG_FIX_C(1000), 0, "-1000..1000 rad/s", &pr->bd.angular_velocity);
+    case P_LINEAR_DAMPING: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 0, "0..1000 1/s", &pr->bd.linear_damping);
+    case P_ANGULAR_DAMPING: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 0, "0..1000 1/s", &pr->bd.angular_damping);
+    case P_GRAVITY_SCALE: return read_fix_in(P, n, NULL, -PG_FIX_C(100), PG_FIX_C(100), 0, "-100..100", &pr->bd.gravity_scale);
+    case P_FIXED_ROTATION: return read_flag(P, n, &pr->bd.fixed_rotation);
+    case P_ALLOW_SLEEP: return read_flag(P, n, &pr->bd.allow_sleep);
+    case P_AWAKE: return read_flag(P, n, &pr->bd.awake);
+    case P_USER_DATA: return read_uint(P, n, UINT64_MAX, &pr->bd.user_data, NULL);
+    case P_DENSITY: return read_fix_in(P, n, NULL, 0, PG_ENV_MAX_DENSITY, 0, "0..100 kg/m^2", &pr->sd.density);
+    case P_FRICTION: return read_fix_in(P, n, NULL, 0, PG_ENV_MAX_FRICTION, 0, "0..10", &pr->sd.friction);
+    case P_RESTITUTION: return read_fix_in(P, n, NULL, 0, PG_FIX_ONE, 0, "0..1", &pr->sd.restitution);
+    case P_CATEGORY:
+        r = read_uint(P, n, 0xFFFFFFFFu, &v, NULL);
+        pr->sd.category = (uint32_t)(v & 0xFFFFFFFFu);
+        return r;
+    case P_MASK:
+        r = read_uint(P, n, 0xFFFFFFFFu, &v, NULL);
+        pr->sd.mask = (uint32_t)(v & 0xFFFFFFFFu);
+        return r;
+    default: /* P_OFFSET */
+        r = read_fix(P, n, "x", &pr->offset.x, NULL);
+        return r != PG_OK ? r : read_fix(P, n, "y", &pr->offset.y, NULL);
+    }
+}
+
+/* Properties up to the end of the line. `ctx` says which apply; `what` names the
+ * statement in messages ("a body", "a circle shape"). pr is NULL for world settings. */
+static pg_result read_props(scene_parser *P, unsigned ctx, props *pr, const char *what)
+{
+    for (;;) {
+        token t = next_token(P);
+        const prop_info *info;
+        uint64_t bit;
+        pg_result r;
+        if (t.len == 0) return PG_OK;
+        info = find_prop(P, t);
+        if (info == NULL) {
+            msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+            msg_put(&m, "expected a property of ");
+            msg_put(&m, what);
+            msg_put(&m, ", got ");
+            msg_token(&m, P, t);
+            return P->result;
+        }
+        if ((info->ctx & ctx) == 0) {
+            msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+            msg_put(&m, "'");
+            msg_put(&m, info->name);
+            msg_put(&m, "' does not apply to ");
+            msg_put(&m, what);
+            return P->result;
+        }
+        bit = (uint64_t)1 << info->slot;
+        if (pr == NULL) {
+            if ((P->settings_seen & bit) != 0) {
+                msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+                msg_put(&m, "'");
+                msg_put(&m, info->name);
+                msg_put(&m, "' is already set on line ");
+                msg_u64(&m, P->setting_line[info->slot]);
+                return P->result;
+            }
+            P->settings_seen |= bit;
+            P->setting_line[info->slot] = P->line;
+            P->setting_column[info->slot] = token_column(P, t);
+            r = read_setting(P, info);
+        } else {
+            if ((pr->seen & bit) != 0) {
+                msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+                msg_put(&m, "'");
+                msg_put(&m, info->name);
+                msg_put(&m, "' is given twice for ");
+                msg_put(&m, what);
+                return P->result;
+            }
+            pr->seen |= bit;
+            pr->line[info->slot] = P->line;
+            pr->column[info->slot] = token_column(P, peek_token(P)); /* where its value is */
+            r = read_prop(P, info, pr);
+        }
+        if (r != PG_OK) return r;
+    }
+}
+
+/* Checks that need the whole statement: velocities against the type and the speed cap,
+ * density against the type. */
+/* An error at a property's value (properties of a body block span lines). */
+static msg fail_prop(scene_parser *P, pg_result r, const props *pr, int slot)
+{
+    if (pr->line[slot] != 0) P->line = pr->line[slot];
+    return fail(P, r, pr->column[slot]);
+}
+
+static pg_result check_body_props(scene_parser *P, const props *pr)
+{
+    const pg_body_def *bd = &pr->bd;
+    if (bd->type == PG_BODY_STATIC && (pr->seen & (((uint64_t)1 << P_LINEAR_VELOCITY) | ((uint64_t)1 << P_ANGULAR_VELOCITY))) != 0) {
+        msg m = fail_prop(P, PG_ERR_BODY_TYPE, pr, (pr->seen & ((uint64_t)1 << P_LINEAR_VELOCITY)) != 0 ? P_LINEAR_VELOCITY : P_ANGULAR_VELOCITY);
+        msg_put(&m, "a static body has no velocity");
+        return P->result;
+    }
+    {
+        int64_t cap = P->def.max_linear_speed;
+        int64_t s2 = (int64_t)bd->linear_velocity.x * bd->linear_velocity.x + (int64_t)bd->linear_velocity.y * bd->linear_velocity.y;
+        if (s2 > cap * cap) {
+            msg m = fail_prop(P, PG_ERR_ENVELOPE, pr, P_LINEAR_VELOCITY);
+            msg_put(&m, "'linear_velocity' has speed ");
+            msg_fix(&m, pg_v2_length(bd->linear_velocity));
+            msg_put(&m, " m/s, above max_linear_speed ");
+            msg_fix(&m, P->def.max_linear_speed);
+            return P->result;
+        }
+    }
+    return PG_OK;
+}
+
+static pg_result check_density(scene_parser *P, const props *pr, pg_body_type type, uint32_t fallback_column)
+{
+    if (type == PG_BODY_DYNAMIC && pr->sd.density < PG_ENV_MIN_DENSITY)
+        return fail_range(P, (pr->seen & ((uint64_t)1 << P_DENSITY)) != 0 ? pr->column[P_DENSITY] : fallback_column, "density",
+                          pr->sd.density, "0.1..100 kg/m^2 (a dynamic body)");
+    return PG_OK;
+}
+
+/* ---- geometry --------------------------------------------------------------------------------------- */
+static pg_result fail_geometry(scene_parser *P, pg_result r, uint32_t column, const char *kind)
+{
+    msg m = fail(P, r, column);
+    msg_put(&m, "the ");
+    msg_put(&m, kind);
+    switch (r) {
+    case PG_ERR_DEGENERATE: msg_put(&m, " is degenerate: no area or length, or repeated or collinear points"); break;
+    case PG_ERR_NOT_CONVEX: msg_put(&m, " is not convex (list the vertices of a convex polygon, either winding)"); break;
+    case PG_ERR_ENVELOPE: msg_put(&m, " is outside the envelope: sizes 0.025..50 m, vertices within 50 m of the body"); break;
+    default: msg_put(&m, " is invalid: "); msg_put(&m, pg_result_message(r)); break;
+    }
+    return P->result;
+}
+
+/* The geometry a ready-made kind makes, validated as pg_make_* does (shape.c). */
+static pg_result make_geometry(int kind, const pg_fix *size, pg_geometry *g)
+{
+    pg_geometry second;
+    pg_result r;
+    switch (kind) {
+    case 0: return pg_geometry_circle(pg_v2_zero(), size[0], g);
+    case 1:
+        if (size[0] < 0) return PG_ERR_DEGENERATE;
+        return pg_geometry_capsule(pg_v2(-size[0] / 2, 0), pg_v2(size[0] - size[0] / 2, 0), size[1], g);
+    case 3: return pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER, g);
+    case 4:
+        r = pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER, g);
+        return r != PG_OK ? r : pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER + PG_ANGLE_HALF, &second);
+    default: return pg_geometry_box(size[0] / 2, size[1] / 2, pg_v2_zero(), 0, g);
+    }
+}
+
+/* ---- bodies -------------------------------------------------------------------------------------------- */
+/* What the library cannot be told through a def: a body that starts asleep once its
+ * shapes are on (adding a shape wakes it), and a static body without the awake flag. */
+static void apply_awake(pg_world *world, pg_body_id id, int awake)
+{
+    pg_body *b = pg__body(world, id);
+    if (b == NULL || awake) return;
+    if (b->type == PG_BODY_STATIC) {
+        b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
+        return;
+    }
+    if ((world->def.effects & PG_EFFECT_SLEEPING) == 0) return; /* nothing sleeps without sleeping */
+    b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
+    b->v = pg_v2_zero();
+    b->w = 0;
+    b->sleep_time = 0;
+    b->island = id.index;
+}
+
+static pg_result fail_world(scene_parser *P, const char *doing)
+{
+    msg m = fail(P, P->result, 1);
+    msg_put(&m, doing);
+    msg_put(&m, ": ");
+    msg_put(&m, pg_world_last_error(P->world));
+    return P->result;
+}
+
+/* Count `bodies` (0 or 1) more bodies and `shapes` more shapes; in READ mode check them
+ * against the capacities the file gives. */
+static pg_result count_objects(scene_parser *P, uint32_t bodies, uint32_t shapes)
+{
+    P->bodies = P->bodies > 0xFFFFFFFFu - bodies ? 0xFFFFFFFFu : P->bodies + bodies;
+    P->shapes = P->shapes > 0xFFFFFFFFu - shapes ? 0xFFFFFFFFu : P->shapes + shapes;
+    if (P->mode == MODE_READ && (P->settings_seen & ((uint64_t)1 << P_MAX_BODIES)) != 0 && P->bodies > P->def.max_bodies) {
+        msg m = fail(P, PG_ERR_CAPACITY, 1);
+        msg_put(&m, "body ");
+        msg_u64(&m, P->bodies);
+        msg_put(&m, " is beyond max_bodies ");
+        msg_u64(&m, P->def.max_bodies);
+        msg_put(&m, " (line ");
+        msg_u64(&m, P->setting_line[P_MAX_BODIES]);
+        msg_put(&m, ")");
+        return P->result;
+    }
+    if (P->mode == MODE_READ && (P->settings_seen & ((uint64_t)1 << P_MAX_SHAPES)) != 0 && P->shapes > P->def.max_shapes) {
+        msg m = fail(P, PG_ERR_CAPACITY, 1);
+        msg_put(&m, "shape ");
+        msg_u64(&m, P->shapes);
+        msg_put(&m, " is beyond max_shapes ");
+        msg_u64(&m, P->def.max_shapes);
+        msg_put(&m, " (line ");
+        msg_u64(&m, P->setting_line[P_MAX_SHAPES]);
+        msg_put(&m, ")");
+        return P->result;
+    }
+    return PG_OK;
+}
+
+/* KIND SIZE... [properties] */
+static pg_result parse_make(scene_parser *P, int kind, token keyword)
+{
+    const make_info *mk = &make_table[kind];
+    pg_fix size[2] = {0, 0};
+    uint32_t size_column = 0;
+    props pr;
+    pg_geometry g;
+    pg_result r;
+    int i;
+    props_init(&pr, kind == 5 ? PG_BODY_STATIC : PG_BODY_DYNAMIC);
+    for (i = 0; i < mk->sizes; ++i) {
+        uint32_t column = 0;
+        r = read_fix(P, mk->size_names[i], NULL, &size[i], &column);
+        if (r != PG_OK) return r;
+        if (i == 0) size_column = column;
+    }
+    r = read_props(P, CTX_BODY | CTX_TYPE | CTX_MATERIAL, &pr, mk->name);
+    if (r != PG_OK) return r;
+    if (kind == 5 && pr.bd.type != PG_BODY_STATIC) {
+        msg m = fail(P, PG_ERR_BODY_TYPE, pr.column[P_TYPE]);
+        msg_put(&m, "a wall is always static");
+        return P->result;
+    }
+    pr.bd.angle = pr.angle;
+    r = check_body_props(P, &pr);
+    if (r == PG_OK) r = check_density(P, &pr, pr.bd.type, token_column(P, keyword));
+    if (r != PG_OK) return r;
+    r = make_geometry(kind, size, &g);
+    if (r != PG_OK) return fail_geometry(P, r, size_column, mk->name);
+    r = count_objects(P, 1, mk->shapes);
+    if (r != PG_OK || P->mode == MODE_READ) return r;
+    {
+        pg_body_id id;
+        switch (kind) {
+        case 0: r = pg_make_ball(P->world, &pr.bd, &pr.sd, size[0], &id); break;
+        case 1: r = pg_make_capsule(P->world, &pr.bd, &pr.sd, size[0], size[1], &id); break;
+        case 2: r = pg_make_box(P->world, &pr.bd, &pr.sd, size[0], size[1], &id); break;
+        case 3: r = pg_make_triangle(P->world, &pr.bd, &pr.sd, size[0], &id); break;
+        case 4: r = pg_make_star(P->world, &pr.bd, &pr.sd, size[0], &id); break;
+        default: r = pg_make_wall(P->world, &pr.bd, &pr.sd, size[0], size[1], &id); break;
+        }
+        if (r != PG_OK) {
+            P->result = r;
+            return fail_world(P, "cannot make the body");
+        }
+        apply_awake(P->world, id, pr.bd.awake);
+    }
+    return PG_OK;
+}
+
+/* body TYPE [properties] */
+static pg_result parse_body_line(scene_parser *P)
+{
+    pg_body_type type = PG_BODY_STATIC;
+    pg_result r = read_type(P, "body", &type);
+    if (r != PG_OK) return r;
+    props_init(&P->body, type);
+    P->in_body = 1;
+    P->body_line = P->line;
+    P->body_shapes = 0;
+    P->body_made = 0;
+    r = count_objects(P, 1, 0);
+    if (r != PG_OK) return r;
+    return read_props(P, CTX_BODY, &P->body, "a body");
+}
+
+/* The open body's properties are complete (at its first shape or at 'end'): check them
+ * and, when loading, create the body. */
+static pg_result make_open_body(scene_parser *P)
+{
+    pg_result r;
+    if (P->body_shapes == 0) {
+        r = check_body_props(P, &P->body);
+        if (r != PG_OK) return r;
+    }
+    if (P->mode == MODE_READ || P->body_made) return PG_OK;
+    P->body.bd.angle = P->body.angle;
+    r = pg_body_create(P->world, &P->body.bd, &P->body_id);
+    if (r != PG_OK) {
+        P->result = r;
+        return fail_world(P, "cannot create the body");
+    }
+    P->body_made = 1;
+    return PG_OK;
+}
+
+/* shape KIND GEOMETRY... [properties] */
+static pg_result parse_shape(scene_parser *P)
+{
+    static const char *const kinds[5] = {"circle", "segment", "capsule", "box", "polygon"};
+    static const char *const whats[5] = {"a circle shape", "a segment shape", "a capsule shape", "a box shape", "a polygon shape"};
+    static const char *const parts[8][2] = {{"vertex 1 x", "vertex 1 y"}, {"vertex 2 x", "vertex 2 y"}, {"vertex 3 x", "vertex 3 y"},
+                                            {"vertex 4 x", "vertex 4 y"}, {"vertex 5 x", "vertex 5 y"}, {"vertex 6 x", "vertex 6 y"},
+                                            {"vertex 7 x", "vertex 7 y"}, {"vertex 8 x", "vertex 8 y"}};
+    token kt = next_token(P);
+    uint32_t kind_column = token_column(P, kt);
+    int kind;
+    pg_fix a[5] = {0, 0, 0, 0, 0};
+    pg_vec2 v[PG_MAX_VERTICES];
+    int32_t count = 0;
+    unsigned ctx = CTX_MATERIAL;
+    props pr;
+    pg_geometry g;
+    pg_result r = PG_OK;
+    for (kind = 0; kind < 5; ++kind)
+        if (token_is(P, kt, kinds[kind])) break;
+    if (kind == 5) return fail_expected(P, kt, "a shape kind (circle, segment, capsule, box or polygon)", NULL, NULL);
+    props_init(&pr, P->body.bd.type);
+    switch (kind) {
+    case 0:
+        r = read_fix(P, "circle", "radius", &a[0], NULL);
+        ctx |= CTX_OFFSET;
+        break;
+    case 1:
+    case 2: {
+        static const char *const names[5] = {"x1", "y1", "x2", "y2", "radius"};
+        int i;
+        for (i = 0; r == PG_OK && i < (kind == 1 ? 4 : 5); ++i) r = read_fix(P, kinds[kind], names[i], &a[i], NULL);
+        break;
+    }
+    case 3:
+        r = read_fix(P, "box", "width", &a[0], NULL);
+        if (r == PG_OK) r = read_fix(P, "box", "height", &a[1], NULL);
+        ctx |= CTX_OFFSET | CTX_SHAPE_ANGLE;
+        break;
+    default:
+        while (r == PG_OK && looks_numeric(P, peek_token(P))) {
+            if (count == PG_MAX_VERTICES) {
+                msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, peek_token(P)));
+                msg_put(&m, "a polygon has at most 8 vertices; this is vertex 9");
+                return P->result;
+            }
+            r = read_fix(P, "polygon", parts[count][0], &v[count].x, NULL);
+            if (r == PG_OK) r = read_fix(P, "polygon", parts[count][1], &v[count].y, NULL);
+            ++count;
+        }
+        if (r == PG_OK && count < 3) {
+            msg m = fail(P, PG_ERR_INVALID_ARGUMENT, kind_column);
+            msg_put(&m, "a polygon needs 3 to 8 vertices (x y pairs), got ");
+            msg_u64(&m, (uint64_t)count);
+            return P->result;
+        }
+        break;
+    }
+    if (r != PG_OK) return r;
+    r = read_props(P, ctx, &pr, whats[kind]);
+    if (r != PG_OK) return r;
+    r = check_density(P, &pr, P->body.bd.type, kind_column);
+    if (r != PG_OK) return r;
+    switch (kind) {
+    case 0: r = pg_geometry_circle(pr.offset, a[0], &g); break;
+    case 1: r = pg_geometry_segment(pg_v2(a[0], a[1]), pg_v2(a[2], a[3]), &g); break;
+    case 2: r = pg_geometry_capsule(pg_v2(a[0], a[1]), pg_v2(a[2], a[3]), a[4], &g); break;
+    case 3: r = pg_geometry_box(a[0] / 2, a[1] / 2, pr.offset, pr.angle, &g); break;
+    default: r = pg_geometry_polygon(v, count, &g); break;
+    }
+    if (r != PG_OK) return fail_geometry(P, r, kind_column, kinds[kind]);
+    if (P->body_shapes >= 64) {
+        msg m = fail(P, PG_ERR_CAPACITY, 1);
+        msg_put(&m, "a body has at most 64 shapes (body of line ");
+        msg_u64(&m, P->body_line);
+        msg_put(&m, ")");
+        return P->result;
+    }
+    r = make_open_body(P);
+    if (r != PG_OK) return r;
+    P->body_shapes += 1u;
+    r = count_objects(P, 0, 1);
+    if (r != PG_OK || P->mode == MODE_READ) return r;
+    {
+        pg_shape_id sid;
+        r = pg_shape_create(P->world, P->body_id, &pr.sd, &g, &sid);
+        if (r != PG_OK) {
+            P->result = r;
+            (void)fail_world(P, "cannot add the shape");
+            (void)pg_body_destroy(P->world, P->body_id); /* no partly built body */
+            P->body_made = 0;
+            return P->result;
+        }
+    }
+    return PG_OK;
+}
+
+static pg_result end_body(scene_parser *P)
+{
+    pg_result r = make_open_body(P);
+    if (r != PG_OK) return r;
+    if (P->mode == MODE_LOAD) apply_awake(P->world, P->body_id, P->body.bd.awake);
+    P->in_body = 0;
+    return PG_OK;
+}
+
+/* ---- statements ------------------------------------------------------------------------------------------ */
+static pg_result parse_header(scene_parser *P)
+{
+    token t = next_token(P), version;
+    msg m;
+    if (!token_is(P, t, PG_SCENE_MAGIC)) {
+        if (t.len == 0) P->last_end = P->line_start;
+        return fail_expected(P, t, "'pogon-scene 1' as the first line", NULL, NULL);
+    }
+    version = next_token(P);
+    if (token_is(P, version, "1")) return expect_end_of_line(P, "the version line");
+    if (version.len != 0 && P->text[version.start] >= '0' && P->text[version.start] <= '9') {
+        m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, version));
+        msg_put(&m, "unsupported version ");
+        msg_token(&m, P, version);
+        msg_put(&m, ": this reader knows version 1");
+        return P->result;
+    }
+    return fail_expected(P, version, "the format version (1) after 'pogon-scene'", NULL, NULL);
+}
+
+static int make_kind_of(const scene_parser *P, token t)
+{
+    int i;
+    for (i = 0; i < 6; ++i)
+        if (token_is(P, t, make_table[i].name)) return i;
+    return -1;
+}
+
+static pg_result parse_statement(scene_parser *P, token t)
+{
+    const prop_info *info = find_prop(P, t);
+    msg m;
+    if (P->in_body) {
+        if (token_is(P, t, "end")) {
+            pg_result r = expect_end_of_line(P, "'end'");
+            return r != PG_OK ? r : end_body(P);
+        }
+        if (token_is(P, t, "shape")) return parse_shape(P);
+        if (info != NULL && (info->ctx & CTX_BODY) != 0) {
+            if (P->body_shapes > 0) {
+                m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+                msg_put(&m, "body properties must come before the body's shapes");
+                return P->result;
+            }
+            P->at = t.start;
+            return read_props(P, CTX_BODY, &P->body, "a body");
+        }
+        if (token_is(P, t, "body") || make_kind_of(P, t) >= 0) {
+            m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+            msg_put(&m, "expected 'end' to close the body of line ");
+            msg_u64(&m, P->body_line);
+            msg_put(&m, " before ");
+            msg_token(&m, P, t);
+            return P->result;
+        }
+        return fail_expected(P, t, "a body property, 'shape' or 'end'", NULL, NULL);
+    }
+    if (info != NULL && (info->ctx & CTX_SETTING) != 0) {
+        if (P->bodies_started) {
+            m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+            msg_put(&m, "world settings must come before the first body");
+            return P->result;
+        }
+        P->at = t.start;
+        return read_props(P, CTX_SETTING, NULL, "the world settings");
+    }
+    if (token_is(P, t, "body")) {
+        P->bodies_started = 1;
+        return parse_body_line(P);
+    }
+    if (make_kind_of(P, t) >= 0) {
+        P->bodies_started = 1;
+        return parse_make(P, make_kind_of(P, t), t);
+    }
+    if (token_is(P, t, "end") || token_is(P, t, "shape")) {
+        m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+        msg_token(&m, P, t);
+        msg_put(&m, " outside a body: open one with 'body TYPE'");
+        return P->result;
+    }
+    if (info != NULL) {
+        m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+        msg_put(&m, "'");
+        msg_put(&m, info->name);
+        msg_put(&m, "' outside a body: put it inside 'body' ... 'end' or on a ready-made line");
+        return P->result;
+    }
+    return fail_expected(P, t, "a setting, 'body' or a ready-made kind (ball capsule box triangle star wall)", NULL, NULL);
+}
+
+static pg_result run(scene_parser *P)
+{
+    int status;
+    while ((status = load_line(P)) > 0) {
+        token t;
+        pg_result r;
+        if (P->line == 1) {
+            r = parse_header(P);
+            if (r != PG_OK) return r;
+            continue;
+        }
+        t = next_token(P);
+        if (t.len == 0) continue;
+        r = parse_statement(P, t);
+        if (r != PG_OK) return r;
+    }
+    if (status < 0) return P->result;
+    if (P->line == 0) { /* empty text */
+        token none;
+        P->line = 1;
+        P->line_start = 0;
+        P->last_end = 0;
+        none.start = 0;
+        none.len = 0;
+        return fail_expected(P, none, "'pogon-scene 1' as the first line", NULL, NULL);
+    }
+    if (P->in_body) {
+        msg m = fail(P, PG_ERR_INVALID_ARGUMENT, column_at(P, P->last_end));
+        msg_put(&m, "expected 'end' to close the body of line ");
+        msg_u64(&m, P->body_line);
+        msg_put(&m, ", got end of file");
+        return P->result;
+    }
+    return PG_OK;
+}
+
+static void parser_init(scene_parser *P, const char *text, size_t length, pg_scene_error *error, pg_world *world)
+{
+    size_t i;
+    unsigned char *p = (unsigned char *)P;
+    for (i = 0; i < sizeof *P; ++i) p[i] = 0;
+    P->text = text;
+    P->length = length;
+    P->world = world;
+    P->mode = world != NULL ? MODE_LOAD : MODE_READ;
+    P->error = error != NULL ? error : &P->scratch_error;
+    P->error->line = 0;
+    P->error->column = 0;
+    P->error->message[0] = '\0';
+    P->def = pg_default_world_def();
+    P->result = PG_OK;
+}
+
+static pg_result fail_null(pg_scene_error *error, const char *what)
+{
+    if (error != NULL) {
+        msg m;
+        error->line = 0;
+        error->column = 0;
+        m.p = error->message;
+        m.cap = sizeof error->message;
+        m.len = 0;
+        m.p[0] = '\0';
+        msg_put(&m, what);
+        msg_put(&m, " is NULL");
+    }
+    return PG_ERR_NULL;
+}
+
+/* The def after a successful READ pass: capacities not given are what the scene needs. */
+static void finish_def(scene_parser *P)
+{
+    uint64_t contacts = (uint64_t)P->shapes * 4u + 64u;
+    if ((P->settings_seen & ((uint64_t)1 << P_MAX_BODIES)) == 0) P->def.max_bodies = P->bodies < 1 ? 1u : P->bodies > (1u << 24) ? 1u << 24 : P->bodies;
+    if ((P->settings_seen & ((uint64_t)1 << P_MAX_SHAPES)) == 0) P->def.max_shapes = P->shapes < 1 ? 1u : P->shapes > (1u << 24) ? 1u << 24 : P->shapes;
+    if ((P->settings_seen & ((uint64_t)1 << P_MAX_CONTACTS)) == 0) P->def.max_contacts = contacts > (1u << 24) ? 1u << 24 : (uint32_t)contacts;
+}
+
+pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, pg_scene_error *error)
+{
+    scene_parser P;
+    pg_result r;
+    if (text == NULL) return fail_null(error, "text");
+    if (def == NULL) return fail_null(error, "def");
+    parser_init(&P, text, length, error, NULL);
+    r = run(&P);
+    if (r != PG_OK) return r;
+    finish_def(&P);
+    *def = P.def;
+    return PG_OK;
+}
+
+/* The first setting (other than capacities) where the world differs from the scene. */
+static int differing_setting(const pg_world_def *a, const pg_world_def *b)
+{
+    if (a->step_hz != b->step_hz) return P_STEP_HZ;
+    if (a->substeps != b->substeps) return P_SUBSTEPS;
+    if (a->gravity.x != b->gravity.x || a->gravity.y != b->gravity.y) return P_GRAVITY;
+    if (a->effects != b->effects) return P_EFFECTS;
+    if (a->contact_hertz != b->contact_hertz) return P_CONTACT_HERTZ;
+    if (a->contact_damping_ratio != b->contact_damping_ratio) return P_CONTACT_DAMPING_RATIO;
+    if (a->contact_push_max != b->contact_push_max) return P_CONTACT_PUSH_MAX;
+    if (a->restitution_threshold != b->restitution_threshold) return P_RESTITUTION_THRESHOLD;
+    if (a->max_linear_speed != b->max_linear_speed) return P_MAX_LINEAR_SPEED;
+    if (a->sleep_linear_tolerance != b->sleep_linear_tolerance) return P_SLEEP_LINEAR_TOLERANCE;
+    if (a->sleep_angular_tolerance != b->sleep_angular_tolerance) return P_SLEEP_ANGULAR_TOLERANCE;
+    if (a->time_to_sleep != b->time_to_sleep) return P_TIME_TO_SLEEP;
+    return -1;
+}
+
+pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_scene_error *error)
+{
+    scene_parser P;
+    pg_world_def wd;
+    pg_result r;
+    int which;
+    if (world == NULL) return fail_null(error, "world");
+    if (text == NULL) return fail_null(error, "text");
+    parser_init(&P, text, length, error, NULL); /* check everything first */
+    r = run(&P);
+    if (r != PG_OK) return r;
+    wd = pg_world_get_def(world);
+    which = differing_setting(&wd, &P.def);
+    if (which >= 0) {
+        const uint64_t bit = (uint64_t)1 << which;
+        msg m;
+        int given = (P.settings_seen & bit) != 0;
+        P.line = given ? P.setting_line[which] : 1u;
+        m = fail(&P, PG_ERR_INVALID_ARGUMENT, given ? P.setting_column[which] : 1u);
+        msg_put(&m, "the world's ");
+        msg_put(&m, prop_name(which));
+        msg_put(&m, given ? " differs from the scene's" : " differs from the default the scene uses");
+        msg_put(&m, ": create the world from pg_scene_read_def's def");
+        return P.result;
+    }
+    parser_init(&P, text, length, error, world);
+    return run(&P);
+}
+
+/* ---- writer ----------------------------------------------------------------------------------------------- */
+static void put_setting_fix(text_out *o, const char *name, pg_fix v)
+{
+    put_str(o, name);
+    put_char(o, ' ');
+    put_fix(o, v);
+    put_char(o, '\n');
+}
+
+static void put_setting_u64(text_out *o, const char *name, uint64_t v)
+{
+    put_str(o, name);
+    put_char(o, ' ');
+    put_u64(o, v);
+    put_char(o, '\n');
+}
+
+static void put_vec(text_out *o, const char *indent, const char *name, pg_vec2 v)
+{
+    put_str(o, indent);
+    put_str(o, name);
+    put_char(o, ' ');
+    put_fix(o, v.x);
+    put_char(o, ' ');
+    put_fix(o, v.y);
+    put_char(o, '\n');
+}
+
+static void put_point(text_out *o, pg_vec2 v)
+{
+    put_char(o, ' ');
+    put_fix(o, v.x);
+    put_char(o, ' ');
+    put_fix(o, v.y);
+}
+
+static void write_settings(text_out *o, const pg_world_def *d)
+{
+    put_str(o, PG_SCENE_MAGIC " 1\n");
+    put_setting_u64(o, "step_hz", d->step_hz);
+    put_setting_u64(o, "substeps", d->substeps);
+    put_vec(o, "", "gravity", d->gravity);
+    put_str(o, "effects");
+    if (d->effects == PG_EFFECTS_ALL) {
+        put_str(o, " all");
+    } else if (d->effects == 0) {
+        put_str(o, " none");
+    } else {
+        int i;
+        for (i = 0; i < 7; ++i)
+            if ((d->effects & (1u << i)) != 0) {
+                put_char(o, ' ');
+                put_str(o, effect_names[i]);
+            }
+    }
+    put_char(o, '\n');
+    put_setting_fix(o, "contact_hertz", d->contact_hertz);
+    put_setting_fix(o, "contact_damping_ratio", d->contact_damping_ratio);
+    put_setting_fix(o, "contact_push_max", d->contact_push_max);
+    put_setting_fix(o, "restitution_threshold", d->restitution_threshold);
+    put_setting_fix(o, "max_linear_speed", d->max_linear_speed);
+    put_setting_fix(o, "sleep_linear_tolerance", d->sleep_linear_tolerance);
+    put_setting_fix(o, "sleep_angular_tolerance", d->sleep_angular_tolerance);
+    put_setting_fix(o, "time_to_sleep", d->time_to_sleep);
+    put_setting_u64(o, "max_bodies", d->max_bodies);
+    put_setting_u64(o, "max_shapes", d->max_shapes);
+    put_setting_u64(o, "max_contacts", d->max_contacts);
+}
+
+static void write_shape(text_out *o, const pg_shape *s)
+{
+    const pg_geometry *g = &s->geometry;
+    pg_shape_def dd = pg_default_shape_def();
+    int32_t i;
+    put_str(o, "  shape ");
+    switch (g->kind) {
+    case PG_SHAPE_CIRCLE:
+        put_str(o, "circle ");
+        put_fix(o, g->radius);
+        if (g->vertices[0].x != 0 || g->vertices[0].y != 0) {
+            put_str(o, " offset");
+            put_point(o, g->vertices[0]);
+        }
+        break;
+    case PG_SHAPE_SEGMENT:
+        put_str(o, "segment");
+        put_point(o, g->vertices[0]);
+        put_point(o, g->vertices[1]);
+        break;
+    case PG_SHAPE_CAPSULE:
+        put_str(o, "capsule");
+        put_point(o, g->vertices[0]);
+        put_point(o, g->vertices[1]);
+        put_char(o, ' ');
+        put_fix(o, g->radius);
+        break;
+    default:
+        put_str(o, "polygon");
+        for (i = 0; i < g->count && i < PG_MAX_VERTICES; ++i) put_point(o, g->vertices[i]);
+        break;
+    }
+    if (s->density != dd.density) put_str(o, " density "), put_fix(o, s->density);
+    if (s->friction != dd.friction) put_str(o, " friction "), put_fix(o, s->friction);
+    if (s->restitution != dd.restitution) put_str(o, " restitution "), put_fix(o, s->restitution);
+    if (s->category != dd.category) put_str(o, " category "), put_hex(o, s->category);
+    if (s->mask != dd.mask) put_str(o, " mask "), put_hex(o, s->mask);
+    put_char(o, '\n');
+}
+
+static void write_body(text_out *o, const pg_world *world, const pg_body *b)
+{
+    uint32_t s, n = 0;
+    put_str(o, "body ");
+    put_str(o, type_names[b->type == PG_BODY_KINEMATIC ? 1 : b->type == PG_BODY_DYNAMIC ? 2 : 0]);
+    put_char(o, '\n');
+    put_vec(o, "  ", "position", b->origin);
+    if (b->angle != 0) {
+        pg_fix degrees = degrees_from_angle(b->angle);
+        if (pg_scene_angle_from_degrees(degrees) == b->angle) {
+            put_str(o, "  angle ");
+            put_fix(o, degrees);
+        } else {
+            put_str(o, "  angle_bits ");
+            put_hex(o, b->angle);
+            put_str(o, "  # about ");
+            put_fix(o, degrees);
+            put_str(o, " degrees");
+        }
+        put_char(o, '\n');
+    }
+    if (b->type != PG_BODY_STATIC && (b->v.x != 0 || b->v.y != 0)) put_vec(o, "  ", "linear_velocity", b->v);
+    if (b->type != PG_BODY_STATIC && b->w != 0) put_str(o, "  angular_velocity "), put_fix(o, b->w), put_char(o, '\n');
+    if (b->linear_damping != 0) put_str(o, "  linear_damping "), put_fix(o, b->linear_damping), put_char(o, '\n');
+    if (b->angular_damping != 0) put_str(o, "  angular_damping "), put_fix(o, b->angular_damping), put_char(o, '\n');
+    if (b->gravity_scale != PG_FIX_ONE) put_str(o, "  gravity_scale "), put_fix(o, b->gravity_scale), put_char(o, '\n');
+    if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) put_str(o, "  fixed_rotation 1\n");
+    if ((b->flags & PG_BODY_FLAG_ALLOW_SLEEP) == 0) put_str(o, "  allow_sleep 0\n");
+    if ((b->flags & PG_BODY_FLAG_AWAKE) == 0) put_str(o, "  awake 0\n");
+    if (b->user_data != 0) put_str(o, "  user_data "), put_u64(o, b->user_data), put_char(o, '\n');
+    for (s = b->first_shape; s != PG_NULL_INDEX && s < world->def.max_shapes && n < 64u; s = world->shapes[s].next, ++n)
+        write_shape(o, &world->shapes[s]);
+    put_str(o, "end\n");
+}
+
+size_t pg_scene_write(const pg_world *world, char *buffer, size_t capacity)
+{
+    text_out o;
+    uint32_t i;
+    o.buf = buffer;
+    o.cap = buffer != NULL ? capacity : 0;
+    o.len = 0;
+    if (world != NULL) {
+        write_settings(&o, &world->def);
+        for (i = 0; i < world->body_high; ++i)
+            if ((world->bodies[i].flags & PG_BODY_FLAG_USED) != 0) write_body(&o, world, &world->bodies[i]);
+    }
+    finish_out(&o);
+    return o.len;
+}

@@ -1,0 +1,391 @@
+/* test_replay_file.c — replay files (replay_file.h): writer, validating reader, player,
+ * and the snapshot round trip the player and synctest rely on. */
+#include <stdlib.h>
+
+#include "pg_test.h"
+#include "pogon/replay_file.h"
+#include "pogon/scene_file.h"
+
+static const char scene_text[] =
+    "pogon-scene 1\n"
+    "max_bodies 64\n"
+    "max_shapes 128\n"
+    "max_contacts 512\n"
+    "wall 40 2 position 0 -1\n"
+    "box 1 1 position 0 0.5\n"
+    "box 1 1 position 0.2 1.5\n"
+    "ball 0.5 position -3 4 restitution 0.5\n"
+    "capsule 1 0.3 position 3 3 angle 30\n"
+    "star 0.6 position 5 5\n"
+    "wall 2 40 position -21 19\n" /* a closed box: nothing leaves the envelope */
+    "wall 2 40 position 21 19\n"
+    "wall 44 2 position 0 39\n";
+
+typedef struct world_box {
+    void *memory;
+    pg_world *world;
+} world_box;
+
+static world_box make_world(void)
+{
+    world_box b;
+    pg_world_def def;
+    size_t need;
+    assert_int_equal(pg_scene_read_def(scene_text, sizeof scene_text - 1, &def, NULL), PG_OK);
+    need = pg_world_memory_size(&def);
+    assert_true(need > 0);
+    b.memory = malloc(need);
+    assert_non_null(b.memory);
+    assert_int_equal(pg_world_create(&def, b.memory, need, &b.world), PG_OK);
+    assert_int_equal(pg_scene_load(b.world, scene_text, sizeof scene_text - 1, NULL), PG_OK);
+    return b;
+}
+
+/* The commands of frame f of the test run (deterministic, a few kinds). */
+static uint32_t frame_commands(uint32_t f, pg_command *out)
+{
+    uint32_t n = 0;
+    pg_body_id box = {1, 1}, ball = {3, 1};
+    if (f % 17 == 3) {
+        out[n] = pg_command_init(PG_CMD_APPLY_LINEAR_IMPULSE);
+        out[n].body = ball;
+        out[n].vec = pg_v2((f / 17) % 2 ? PG_FIX_C(-1) : PG_FIX_C(1), PG_FIX_C(1)); /* stays in the envelope */
+        out[n].point = pg_v2(PG_FIX_C(-3), PG_FIX_C(4));
+        n++;
+    }
+    if (f % 29 == 7) {
+        out[n] = pg_command_init(PG_CMD_SET_ANGULAR_VELOCITY);
+        out[n].body = box;
+        out[n].scalar = PG_FIX_C(1);
+        n++;
+    }
+    if (f == 40) {
+        out[n] = pg_command_init(PG_CMD_MAKE);
+        out[n].make_kind = PG_MAKE_BOX;
+        out[n].body_def = pg_default_body_def();
+        out[n].body_def.type = PG_BODY_DYNAMIC;
+        out[n].body_def.position = pg_v2(0, PG_FIX_C(8));
+        out[n].shape_def = pg_default_shape_def();
+        out[n].size0 = PG_FIX_C(1);
+        out[n].size1 = PG_FIX_C(1);
+        n++;
+    }
+    if (f == 60) {
+        out[n] = pg_command_init(PG_CMD_SET_EFFECTS);
+        out[n].value = PG_EFFECTS_ALL & ~PG_EFFECT_FRICTION;
+        n++;
+    }
+    return n;
+}
+
+/* Record `frames` frames with checkpoints every `interval` into a malloc'd buffer,
+ * growing it from `initial` bytes when the writer asks. */
+static uint8_t *record(uint32_t frames, uint32_t interval, size_t initial, size_t *size, uint64_t *final_hash)
+{
+    world_box b = make_world();
+    pg_replay_writer w;
+    size_t cap = initial;
+    uint8_t *buf = malloc(cap);
+    pg_command cmds[8];
+    uint32_t f;
+    pg_result r;
+    assert_non_null(buf);
+#define GROW(call)                                                      \
+    while ((r = (call)) == PG_ERR_MEMORY) {                             \
+        cap *= 2;                                                       \
+        buf = realloc(buf, cap);                                        \
+        assert_non_null(buf);                                           \
+        assert_int_equal(pg_replay_writer_set_buffer(&w, buf, cap), PG_OK); \
+    }                                                                   \
+    assert_int_equal(r, PG_OK)
+    while ((r = pg_replay_writer_begin(&w, buf, cap, scene_text, sizeof scene_text - 1, interval)) == PG_ERR_MEMORY) {
+        cap *= 2;
+        buf = realloc(buf, cap);
+    }
+    assert_int_equal(r, PG_OK);
+    assert_true(pg_replay_writer_checkpoint_due(&w));
+    assert_int_equal(pg_replay_writer_add_frame(&w, NULL, 0), PG_ERR_INVALID_ARGUMENT); /* checkpoint 0 first */
+    GROW(pg_replay_writer_add_checkpoint_world(&w, b.world));
+    for (f = 0; f < frames; ++f) {
+        uint32_t n = frame_commands(f, cmds), i;
+        GROW(pg_replay_writer_add_frame(&w, cmds, n));
+        for (i = 0; i < n; ++i) pg_command_apply(b.world, &cmds[i], NULL);
+        pg_world_step(b.world);
+        if (pg_replay_writer_checkpoint_due(&w)) {
+            assert_int_equal(pg_replay_writer_finish(&w, 0, NULL), PG_ERR_INVALID_ARGUMENT);
+            GROW(pg_replay_writer_add_checkpoint_world(&w, b.world));
+        }
+    }
+    assert_int_equal(pg_replay_writer_add_checkpoint_world(&w, b.world), PG_ERR_INVALID_ARGUMENT); /* not due */
+    *final_hash = pg_world_hash(b.world);
+    GROW(pg_replay_writer_finish(&w, *final_hash, size));
+#undef GROW
+    free(b.memory);
+    return buf;
+}
+
+static void test_write_read_play(void **state)
+{
+    size_t size, size2, mem;
+    uint64_t final_hash, h2;
+    uint8_t *file = record(125, 10, 1 << 16, &size, &final_hash);
+    uint8_t *file2 = record(125, 10, 64, &size2, &h2); /* grown many times: same bytes */
+    pg_replay_info info;
+    pg_replay_error err;
+    pg_replay_player p;
+    pg_replay_frame_result fr;
+    void *memory;
+    uint32_t checked = 1;
+    (void)state;
+    assert_int_equal(size, size2);
+    assert_memory_equal(file, file2, size);
+    assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
+    assert_int_equal(info.format_version, 1);
+    assert_int_equal(info.engine_major, POGON_VERSION_MAJOR);
+    assert_int_equal(info.checkpoint_interval, 10);
+    assert_int_equal(info.section_count, PG_SECTION_COUNT);
+    assert_int_equal(info.frame_count, 125);
+    assert_int_equal(info.checkpoint_count, 13);
+    assert_int_equal(info.scene_size, sizeof scene_text - 1);
+    assert_memory_equal(info.scene_text, scene_text, info.scene_size);
+    assert_int_equal(info.kind_counts[PG_CMD_MAKE], 1);
+    assert_int_equal(info.kind_counts[PG_CMD_SET_EFFECTS], 1);
+    assert_int_equal(info.kind_counts[PG_CMD_APPLY_LINEAR_IMPULSE], 8);
+    assert_true(info.final_hash == final_hash);
+
+    assert_int_equal(pg_replay_world_memory_size(&info, &mem, &err), PG_OK);
+    memory = malloc(mem);
+    assert_int_equal(pg_replay_player_begin(&p, file, &info, memory, mem, &fr, &err), PG_OK);
+    assert_true(fr.match);
+    while (!pg_replay_player_done(&p)) {
+        assert_int_equal(pg_replay_player_step(&p, &fr), PG_OK);
+        if (fr.checkpoint) {
+            assert_true(fr.match);
+            assert_int_equal(fr.section_mismatch, 0);
+            checked++;
+        }
+    }
+    assert_int_equal(checked, 13);
+    assert_true(pg_world_hash(p.world) == final_hash);
+    assert_int_equal(pg_replay_player_step(&p, &fr), PG_ERR_INVALID_ARGUMENT);
+    free(memory);
+    free(file);
+    free(file2);
+}
+
+/* Every single-bit flip is detected, and the reported offset lies in the flipped region. */
+static void test_every_bit_flip(void **state)
+{
+    size_t size, i;
+    uint64_t h;
+    uint8_t *file = record(30, 10, 1 << 16, &size, &h);
+    pg_replay_info info;
+    pg_replay_error err;
+    (void)state;
+    assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
+    for (i = 0; i < size; ++i) {
+        int bit;
+        for (bit = 0; bit < 8; ++bit) {
+            pg_replay_info bad;
+            size_t lo, hi;
+            file[i] ^= (uint8_t)(1u << bit);
+            if (pg_replay_read(file, size, &bad, &err) == PG_OK) {
+                print_error("flip of bit %d of byte %zu not detected\n", bit, i);
+                fail();
+            }
+            if (i < PG_REPLAY_HEADER_SIZE) lo = 0, hi = PG_REPLAY_HEADER_SIZE;
+            else if (i < info.records_offset) lo = info.scene_offset, hi = info.records_offset;
+            else if (i < size - 8) lo = info.records_offset, hi = size - 8;
+            else lo = size - 8, hi = size;
+            if (err.offset < lo || err.offset >= hi) {
+                print_error("flip of bit %d of byte %zu reported at offset %zu (%s.%s: %s), outside [%zu, %zu)\n", bit,
+                            i, err.offset, err.region, err.field, err.message, lo, hi);
+                fail();
+            }
+            file[i] ^= (uint8_t)(1u << bit);
+        }
+    }
+    free(file);
+}
+
+/* Every truncation fails, never reading past the given length (ASan would see it:
+ * each prefix is copied into an exactly sized allocation). */
+static void test_truncation(void **state)
+{
+    size_t size, n;
+    uint64_t h;
+    uint8_t *file = record(30, 10, 1 << 16, &size, &h);
+    pg_replay_info info;
+    pg_replay_error err;
+    (void)state;
+    for (n = 0; n < size; ++n) {
+        uint8_t *prefix = malloc(n ? n : 1);
+        memcpy(prefix, file, n);
+        assert_int_equal(pg_replay_read(n ? prefix : NULL, n, &info, &err), n ? PG_ERR_INVALID_ARGUMENT : PG_ERR_INVALID_ARGUMENT);
+        assert_true(err.offset <= n);
+        free(prefix);
+    }
+    assert_int_equal(pg_replay_read(NULL, 5, &info, &err), PG_ERR_NULL);
+    free(file);
+}
+
+/* A command changed (hashes fixed) replays to a mismatch at the next checkpoint. */
+static void test_changed_command_diverges(void **state)
+{
+    size_t size, mem;
+    uint64_t h;
+    uint8_t *file = record(60, 1, 1 << 16, &size, &h);
+    pg_replay_info info;
+    pg_replay_error err;
+    pg_replay_player p;
+    pg_replay_frame_result fr;
+    void *memory;
+    size_t pos, block = 0, cs;
+    uint32_t frame = 0, target = 0;
+    int changed = 0;
+    (void)state;
+    assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
+    cs = 21u + 8u * info.section_count;
+    /* with N = 1 the records are C F C F ... : change the first command, frame 3's impulse */
+    pos = info.records_offset;
+    while (pos < info.end_offset && !changed) {
+        if (file[pos] == PG_REPLAY_TAG_CHECKPOINT) {
+            pos += cs;
+            block = pos;
+            continue;
+        }
+        if (file[pos + 1] != 0) {
+            pg_command c;
+            size_t used;
+            uint8_t enc[PG_COMMAND_ENCODED_MAX];
+            assert_int_equal(pg_command_decode(file + pos + 3, info.end_offset - pos - 3, &c, &used, NULL, NULL), PG_OK);
+            c.vec.x += 1;
+            assert_int_equal(pg_command_encode(&c, enc, sizeof enc), used);
+            memcpy(file + pos + 3, enc, used);
+            pos += 3 + used;
+            assert_int_equal(file[pos], PG_REPLAY_TAG_CHECKPOINT);
+            {
+                uint64_t bh = pg_hash_bytes(PG_HASH_SEED, file + block, pos + cs - 8 - block), ck;
+                int k;
+                for (k = 0; k < 8; ++k) file[pos + cs - 8 + (size_t)k] = (uint8_t)(bh >> (8 * k));
+                ck = pg_hash_bytes(PG_HASH_SEED, file, size - 8);
+                for (k = 0; k < 8; ++k) file[size - 8 + (size_t)k] = (uint8_t)(ck >> (8 * k));
+            }
+            target = frame;
+            changed = 1;
+            break;
+        }
+        pos += 3;
+        frame++;
+    }
+    assert_true(changed);
+    assert_int_equal(target, 3);
+    assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
+    assert_int_equal(pg_replay_world_memory_size(&info, &mem, &err), PG_OK);
+    memory = malloc(mem);
+    assert_int_equal(pg_replay_player_begin(&p, file, &info, memory, mem, &fr, &err), PG_OK);
+    assert_true(fr.match);
+    for (;;) {
+        assert_int_equal(pg_replay_player_step(&p, &fr), PG_OK);
+        assert_true(fr.checkpoint);
+        if (!fr.match) break;
+    }
+    assert_int_equal(fr.frame, target);
+    assert_true(fr.section_mismatch & (1u << PG_SECTION_BODIES));
+    free(memory);
+    free(file);
+}
+
+/* Snapshot/restore round trip: world A steps 10000 frames untouched; world B is saved
+ * every 100 frames and the snapshot restored into world C, which carries on (and the
+ * other way round next time). The hashes agree every frame, the snapshots bit for bit. */
+static void test_snapshot_round_trip_10000(void **state)
+{
+    world_box a = make_world(), b = make_world(), c = make_world();
+    pg_world *cur = b.world, *other = c.world;
+    pg_command cmds[8];
+    uint8_t *snap_a = NULL, *snap_cur = NULL;
+    size_t cap = 0;
+    uint32_t f;
+    (void)state;
+    for (f = 0; f < 10000; ++f) {
+        uint32_t n = frame_commands(f % 400 + (f >= 400 ? 100 : 0), cmds), i; /* MAKE and SET_EFFECTS once */
+        for (i = 0; i < n; ++i) {
+            pg_command_apply(a.world, &cmds[i], NULL);
+            pg_command_apply(cur, &cmds[i], NULL);
+        }
+        pg_world_step(a.world);
+        pg_world_step(cur);
+        if (pg_world_hash(a.world) != pg_world_hash(cur)) {
+            print_error("hash differs after frame %u\n", f);
+            fail();
+        }
+        if (f % 100 == 99) {
+            size_t need = pg_world_snapshot_size(cur), wa, wc;
+            pg_world *t;
+            if (pg_world_snapshot_size(a.world) > need) need = pg_world_snapshot_size(a.world);
+            if (need > cap) {
+                cap = need;
+                snap_a = realloc(snap_a, cap);
+                snap_cur = realloc(snap_cur, cap);
+            }
+            assert_int_equal(pg_world_snapshot_save(a.world, snap_a, cap, &wa), PG_OK);
+            assert_int_equal(pg_world_snapshot_save(cur, snap_cur, cap, &wc), PG_OK);
+            assert_int_equal(wa, wc);
+            assert_memory_equal(snap_a, snap_cur, wa);
+            assert_int_equal(pg_world_snapshot_restore(other, snap_cur, wc), PG_OK);
+            assert_true(pg_world_hash(other) == pg_world_hash(cur));
+            t = cur, cur = other, other = t;
+        }
+    }
+    assert_true(pg_world_frame(a.world) == 10000);
+    free(snap_a);
+    free(snap_cur);
+    free(a.memory);
+    free(b.memory);
+    free(c.memory);
+}
+
+static void test_writer_rejects(void **state)
+{
+    uint8_t buf[4096];
+    pg_replay_writer w;
+    uint64_t sections[PG_SECTION_COUNT] = {0};
+    pg_command bad;
+    (void)state;
+    assert_int_equal(pg_replay_writer_begin(&w, buf, sizeof buf, scene_text, sizeof scene_text - 1, 0),
+                     PG_ERR_INVALID_ARGUMENT);
+    assert_int_equal(pg_replay_writer_begin(&w, buf, 50, scene_text, sizeof scene_text - 1, 5), PG_ERR_MEMORY);
+    assert_int_equal(pg_replay_writer_begin(&w, buf, sizeof buf, scene_text, sizeof scene_text - 1, 5), PG_OK);
+    assert_int_equal(pg_replay_writer_add_checkpoint(&w, 1, sections), PG_OK);
+    assert_int_equal(pg_replay_writer_add_checkpoint(&w, 1, sections), PG_ERR_INVALID_ARGUMENT);
+    bad = pg_command_init(PG_CMD_NONE);
+    {
+        size_t before = w.size;
+        assert_int_equal(pg_replay_writer_add_frame(&w, &bad, 1), PG_ERR_INVALID_ARGUMENT);
+        assert_int_equal(w.size, before);
+    }
+    assert_int_equal(pg_replay_writer_add_frame(&w, NULL, 0), PG_OK);
+    assert_int_equal(pg_replay_writer_finish(&w, 7, NULL), PG_OK);
+    assert_int_equal(pg_replay_writer_add_frame(&w, NULL, 0), PG_ERR_INVALID_ARGUMENT);
+    {
+        pg_replay_info info;
+        pg_replay_error err;
+        assert_int_equal(pg_replay_read(buf, w.size, &info, &err), PG_OK);
+        assert_int_equal(info.frame_count, 1);
+        assert_true(info.final_hash == 7);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_writer_rejects),
+        cmocka_unit_test(test_write_read_play),
+        cmocka_unit_test(test_every_bit_flip),
+        cmocka_unit_test(test_truncation),
+        cmocka_unit_test(test_changed_command_diverges),
+        cmocka_unit_test(test_snapshot_round_trip_10000),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
