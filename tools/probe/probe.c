@@ -163,6 +163,69 @@ static int run(const probe_scene *sc, uint32_t every)
     return ok;
 }
 
+#ifdef POGON_PROBE_CORPUS_LIST
+#include "pogon/replay_file.h"
+/* Verify one replay of the regression corpus against its recorded checkpoints, like
+ * `pogon-replay verify`: prints frames, checkpoints, mismatches and the final hash, so
+ * a target that diverges prints a different line (and the count says it failed). */
+static int verify_replay(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    uint8_t *data = NULL;
+    long size;
+    void *memory = NULL;
+    size_t need = 0;
+    pg_replay_info info;
+    pg_replay_error err;
+    pg_replay_player player;
+    pg_replay_frame_result fr;
+    uint32_t mismatches = 0;
+    const char *name = strrchr(path, '/') != NULL ? strrchr(path, '/') + 1 : path;
+    int ok = 0;
+    if (f == NULL || fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) goto done;
+    data = (uint8_t *)malloc((size_t)size + 1u);
+    if (data == NULL || fread(data, 1, (size_t)size, f) != (size_t)size) goto done;
+    if (pg_replay_read(data, (size_t)size, &info, &err) != PG_OK) goto done;
+    if (pg_replay_world_memory_size(&info, &need, &err) != PG_OK) goto done;
+    memory = malloc(need);
+    if (memory == NULL || pg_replay_player_begin(&player, data, &info, memory, need, &fr, &err) != PG_OK) goto done;
+    if (!fr.match) ++mismatches;
+    while (!pg_replay_player_done(&player)) {
+        if (pg_replay_player_step(&player, &fr) != PG_OK) goto done;
+        if (fr.checkpoint && !fr.match) ++mismatches;
+    }
+    printf("replay %s frames %u checkpoints %u mismatches %u final %016llx %s\n", name, info.frame_count, info.checkpoint_count,
+           mismatches, (unsigned long long)pg_world_hash(player.world), mismatches == 0 && pg_world_hash(player.world) == info.final_hash ? "OK" : "DIVERGED");
+    ok = mismatches == 0 && pg_world_hash(player.world) == info.final_hash;
+done:
+    if (!ok && data != NULL && mismatches == 0) printf("replay %s could not be played\n", name);
+    if (f != NULL) fclose(f);
+    free(memory);
+    free(data);
+    return ok;
+}
+
+static int verify_corpus(void)
+{
+    FILE *list = fopen(POGON_PROBE_CORPUS_LIST, "r");
+    char line[1024];
+    int ok = 1;
+    if (list == NULL) {
+        printf("corpus list %s not found\n", POGON_PROBE_CORPUS_LIST);
+        return 0;
+    }
+    while (fgets(line, sizeof line, list) != NULL) {
+        size_t n = strlen(line);
+        while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == '\r')) line[--n] = '\0';
+        if (n == 0) continue;
+        if (!verify_replay(line)) ok = 0;
+        fflush(stdout);
+    }
+    fclose(list);
+    return ok;
+}
+#endif
+
 int main(int argc, char **argv)
 {
     unsigned char selected[SCENE_COUNT];
@@ -196,5 +259,8 @@ int main(int argc, char **argv)
         if (!run(&SCENES[k], every)) status = 1;
         fflush(stdout);
     }
+#ifdef POGON_PROBE_CORPUS_LIST
+    if (!any && !verify_corpus()) status = 1;
+#endif
     return status;
 }
