@@ -6,18 +6,20 @@
 #       OUTPUT: the reference the other targets are compared with (a CTest fixture, so it
 #       is produced in the same test run, never a stored hash).
 #
-#   build_and_run.sh target NAME WORK_DIR NATIVE_OUTPUT SOURCES_FILE [--run WORD]...
-#                    [--cache DIR] -- CC [FLAG...]
-#       Compile every file listed in SOURCES_FILE (one path a line: the library's sources,
-#       tools/scenes/scenes.c, tools/probe/probe.c) with `CC FLAG...` in one call into
-#       WORK_DIR, run the program (prefixed by the --run words: qemu-arm, node, ...), and
-#       compare its output line by line with NATIVE_OUTPUT. Exit 0 when every line is
-#       identical, 1 when not (or when the build or the run fails), 77 (CTest's
-#       SKIP_RETURN_CODE) when the compiler or the runner is not installed.
+#   build_and_run.sh target NAME WORK_DIR NATIVE_OUTPUT SOURCES_FILE [--root SRC_DIR]
+#                    [--run WORD]... [--arg WORD]... [--cache CACHE_DIR] -- CC [FLAG...]
+#       In SRC_DIR (default: the current directory; relative paths in SOURCES_FILE and in
+#       -I flags are relative to it), compile every file listed in SOURCES_FILE (one a
+#       line: the library's sources, tools/scenes/scenes.c, tools/probe/probe.c) with
+#       `CC FLAG...` in one call, run the program (prefixed by the --run words: qemu-arm,
+#       node, ...; followed by the --arg words) in WORK_DIR, and compare its output line by line with NATIVE_OUTPUT.
+#       Exit 0 when every line is identical, 1 when not (or when the build or the run
+#       fails), 77 (CTest's SKIP_RETURN_CODE) when the compiler or the runner is missing.
 #       The program is reused while the compile command and the contents of the sources
-#       and of the headers under the -I directories are unchanged (emcc takes ~10 s): it is
-#       kept in DIR/NAME-STAMP/ (default: WORK_DIR), where STAMP hashes all of those, so
-#       several build trees may share one DIR (scripts/test.sh does, for its presets).
+#       and of the headers under the -I directories are unchanged (emcc takes ~10 s): it
+#       is kept in CACHE_DIR/NAME-STAMP/ (default CACHE_DIR: WORK_DIR), where STAMP hashes
+#       all of those, so build trees may share one CACHE_DIR (scripts/test.sh does, for
+#       its presets; tests/targets compiles with paths relative to SRC_DIR for that).
 set -uo pipefail
 
 now() { date +%s.%N; }
@@ -40,16 +42,20 @@ if [ "$mode" = native ]; then
 fi
 
 if [ "$mode" != target ] || [ $# -lt 6 ]; then
-  sed -n '2,20p' "$0" >&2
+  sed -n '2,/^set -uo/p' "$0" | sed '$d' >&2
   exit 2
 fi
 name=$1 work=$2 native=$3 sources_file=$4
 shift 4
 runner=()
+program_args=()
 cache=$work
+root=.
 while [ $# -gt 0 ] && [ "$1" != -- ]; do
   case $1 in
     --run) runner+=("$2"); shift 2 ;;
+    --root) root=$2; shift 2 ;;
+    --arg) program_args+=("$2"); shift 2 ;;
     --cache) cache=${2:-$work}; [ -n "$cache" ] || cache=$work; shift 2 ;;
     *) echo "build_and_run.sh: unknown argument $1" >&2; exit 2 ;;
   esac
@@ -71,6 +77,11 @@ fi
 
 mapfile -t sources <"$sources_file"
 mkdir -p "$work" "$cache"
+work=$(cd "$work" && pwd) cache=$(cd "$cache" && pwd) native=$(cd "$(dirname "$native")" && pwd)/$(basename "$native")
+if ! cd "$root"; then
+  echo "determinism_$name: no source directory $root (build the project first: it copies the sources there)" >&2
+  exit 1
+fi
 case ${compile[0]} in
   *emcc*) program_name=probe.js ;;
   *) program_name=probe ;;
@@ -114,13 +125,13 @@ fi
 touch "$bin_dir"
 
 t0=$(now)
-if ! (cd "$work" && ${runner[0]:+"${runner[@]}"} "$program") >"$work/output.txt" 2>"$work/stderr.txt"; then
+if ! (cd "$work" && ${runner[0]:+"${runner[@]}"} "$program" ${program_args[0]:+"${program_args[@]}"}) >"$work/output.txt" 2>"$work/stderr.txt"; then
   echo "determinism_$name: run FAILED: ${runner[*]} $program" >&2
   cat "$work/stderr.txt" >&2
   cat "$work/output.txt"
   exit 1
 fi
-echo "run: ${runner[*]:+${runner[*]} }$program ($(elapsed "$t0") s)"
+echo "run: ${runner[*]:+${runner[*]} }$program${program_args[0]:+ ${program_args[*]}} ($(elapsed "$t0") s)"
 
 # Line by line: label count steps hash [world=hash]
 mapfile -t want <"$native"

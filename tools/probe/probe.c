@@ -2,10 +2,16 @@
  * builds for different compilers, optimisation levels and CPUs can be compared bit for
  * bit (tests/targets: the determinism_* tests).
  *
- * Usage: pogon-probe [--every N] [--list] [SCENE...]
+ * Usage: pogon-probe [--every N] [--list] [--corpus LIST] [SCENE...]
  *   SCENE     one or more labels from the table below (default: all of them)
  *   --every N also print a line every N steps (to find the first step that differs)
  *   --list    print the labels and exit
+ *   --corpus LIST  after the scenes, verify the replay files named in LIST (one path a
+ *             line) against their checkpoints: a line "replay NAME ... OK" each. Default:
+ *             POGON_PROBE_CORPUS_LIST (set for the native build by tools/CMakeLists.txt;
+ *             the determinism_* builds pass the list at run time instead, so their
+ *             compile command, and so the programs, are the same in every build tree).
+ *             Needs POGON_PROBE_REPLAY (implied by POGON_PROBE_CORPUS_LIST).
  *
  * Output, one line per scene (and per checkpoint with --every):
  *   LABEL COUNT STEPS HASH [world=WORLDHASH]
@@ -163,7 +169,14 @@ static int run(const probe_scene *sc, uint32_t every)
     return ok;
 }
 
-#ifdef POGON_PROBE_CORPUS_LIST
+#if defined(POGON_PROBE_CORPUS_LIST) && !defined(POGON_PROBE_REPLAY)
+#define POGON_PROBE_REPLAY 1
+#endif
+#ifndef POGON_PROBE_CORPUS_LIST
+#define POGON_PROBE_CORPUS_LIST NULL
+#endif
+
+#if POGON_PROBE_REPLAY
 #include "pogon/replay_file.h"
 /* Verify one replay of the regression corpus against its recorded checkpoints, like
  * `pogon-replay verify`: prints frames, checkpoints, mismatches and the final hash, so
@@ -205,13 +218,13 @@ done:
     return ok;
 }
 
-static int verify_corpus(void)
+static int verify_corpus(const char *list_path)
 {
-    FILE *list = fopen(POGON_PROBE_CORPUS_LIST, "r");
+    FILE *list = fopen(list_path, "r");
     char line[1024];
     int ok = 1;
     if (list == NULL) {
-        printf("corpus list %s not found\n", POGON_PROBE_CORPUS_LIST);
+        printf("corpus list %s not found\n", list_path);
         return 0;
     }
     while (fgets(line, sizeof line, list) != NULL) {
@@ -230,6 +243,7 @@ int main(int argc, char **argv)
 {
     unsigned char selected[SCENE_COUNT];
     uint32_t every = 0;
+    const char *corpus = POGON_PROBE_CORPUS_LIST;
     int any = 0, i, status = 0;
     size_t k;
     memset(selected, 0, sizeof selected);
@@ -239,8 +253,10 @@ int main(int argc, char **argv)
             return 0;
         } else if (strcmp(argv[i], "--every") == 0 && i + 1 < argc) {
             every = (uint32_t)strtoul(argv[++i], NULL, 10);
+        } else if (strcmp(argv[i], "--corpus") == 0 && i + 1 < argc) {
+            corpus = argv[++i];
         } else if (strcmp(argv[i], "-h") == 0 || strcmp(argv[i], "--help") == 0) {
-            printf("usage: pogon-probe [--every N] [--list] [SCENE...]\n");
+            printf("usage: pogon-probe [--every N] [--list] [--corpus LIST] [SCENE...]\n");
             return 0;
         } else {
             for (k = 0; k < SCENE_COUNT; ++k) {
@@ -259,8 +275,13 @@ int main(int argc, char **argv)
         if (!run(&SCENES[k], every)) status = 1;
         fflush(stdout);
     }
-#ifdef POGON_PROBE_CORPUS_LIST
-    if (!any && !verify_corpus()) status = 1;
+#if POGON_PROBE_REPLAY
+    if (!any && corpus != NULL && !verify_corpus(corpus)) status = 1;
+#else
+    if (corpus != NULL) {
+        fprintf(stderr, "pogon-probe: --corpus needs a build with POGON_PROBE_REPLAY\n");
+        status = 1;
+    }
 #endif
     return status;
 }
