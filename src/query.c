@@ -66,23 +66,8 @@ pg_result pg_world_query_aabb(const pg_world *w, pg_aabb box, pg_body_id *out, u
 static pg_result place_geometry(const pg_world *w, const pg_geometry *geometry, pg_vec2 position, pg_angle angle, pg_geom *out)
 {
     pg_geom local;
-    int32_t i, n;
     if (geometry->count < 1 || geometry->count > PG_MAX_VERTICES) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, "geometry count must be 1..8");
-    n = geometry->count;
-    for (i = 0; i < PG_MAX_POLYGON_VERTICES; ++i) {
-        local.vertices[i] = i < n ? geometry->vertices[i] : pg_v2_zero();
-        local.normals[i].x = local.normals[i].y = 0;
-    }
-    local.count = n;
-    local.radius = geometry->radius;
-    if (n >= 2) {
-        for (i = 0; i < n; ++i) {
-            pg_vec2 a = geometry->vertices[i], b = geometry->vertices[(i + 1) % n];
-            local.normals[i] = pg_dir_normalize((int64_t)b.y - a.y, -((int64_t)b.x - a.x));
-        }
-        if (n == 2) local.normals[1].x = -local.normals[0].x, local.normals[1].y = -local.normals[0].y;
-    }
-    local.centroid = geometry->vertices[0];
+    pg__shape_build_local(geometry, &local); /* the same collision form a shape gets */
     pg_geom_transform(&local, position, pg_rot_from_angle(angle), out);
     return PG_OK;
 }
