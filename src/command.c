@@ -1,6 +1,7 @@
 /* command.c — the command form of every change made to a world from outside a step,
  * its canonical binary encoding, and a queue for later frames. */
 #include "pogon/replay.h"
+#include "wide.h"
 
 static const char *const kind_names[PG_CMD_KIND_COUNT] = {
     "none", "create_body", "destroy_body", "add_shape", "make", "set_transform", "set_linear_velocity",
@@ -205,9 +206,7 @@ static uint32_t get_u32(reader *r, const char *field)
     r->pos += 4;
     return v;
 }
-/* uint32 -> int32 without implementation-defined conversion */
-static int32_t to_i32(uint32_t u) { return u <= (uint32_t)INT32_MAX ? (int32_t)u : -(int32_t)(~u) - 1; }
-static int32_t get_i32(reader *r, const char *field) { return to_i32(get_u32(r, field)); }
+static int32_t get_i32(reader *r, const char *field) { return pg__i32_from_bits(get_u32(r, field)); }
 static uint64_t get_u64(reader *r, const char *field)
 {
     uint64_t lo = get_u32(r, field);

@@ -14,6 +14,7 @@
  * recomputed at the next step.
  */
 #include "pogon/replay.h"
+#include "wide.h"
 #include "world_internal.h"
 
 #define SNAPSHOT_MAGIC 0x4E534750u /* "PGSN" */
@@ -320,15 +321,13 @@ static uint32_t take_u32(source *r, const char *field)
     r->pos += 4;
     return v;
 }
-static int32_t as_i32(uint32_t u) { return u <= (uint32_t)INT32_MAX ? (int32_t)u : -(int32_t)(~u) - 1; }
-static int64_t as_i64(uint64_t u) { return u <= (uint64_t)INT64_MAX ? (int64_t)u : -(int64_t)(~u) - 1; }
-static int32_t take_i32(source *r, const char *field) { return as_i32(take_u32(r, field)); }
+static int32_t take_i32(source *r, const char *field) { return pg__i32_from_bits(take_u32(r, field)); }
 static uint64_t take_u64(source *r, const char *field)
 {
     uint64_t lo = take_u32(r, field);
     return lo | (uint64_t)take_u32(r, field) << 32;
 }
-static int64_t take_i64(source *r, const char *field) { return as_i64(take_u64(r, field)); }
+static int64_t take_i64(source *r, const char *field) { return pg__i64_from_bits(take_u64(r, field)); }
 static pg_vec2 take_vec(source *r, const char *field)
 {
     pg_vec2 v;

@@ -7,6 +7,11 @@
 
 typedef struct pg_u128 { uint64_t hi, lo; } pg_u128;
 
+/* The signed value of a two's-complement bit pattern, without implementation-defined
+ * conversion (for decoding little-endian fields). */
+static inline int32_t pg__i32_from_bits(uint32_t u) { return u <= (uint32_t)INT32_MAX ? (int32_t)u : -(int32_t)(~u) - 1; }
+static inline int64_t pg__i64_from_bits(uint64_t u) { return u <= (uint64_t)INT64_MAX ? (int64_t)u : -(int64_t)(~u) - 1; }
+
 static inline uint64_t pg__mag64(int64_t v) { return v < 0 ? (uint64_t)(-(v + 1)) + 1u : (uint64_t)v; }
 
 static inline pg_u128 pg__mul_u64(uint64_t a, uint64_t b)
