@@ -31,6 +31,7 @@ typedef struct solver_body {
     pg_vec2 v;
     pg_fix w;
     pg_vec2 c0, c;        /* centre at the start of the step, and now */
+    pg_vec2 dp;           /* c - c0: |.| <= substeps * VELOCITY_MAX h < 2^24, fits */
     pg_angle a0, a;
     pg_rot dq;            /* rotation from a0 to a */
     pg_vec2 accel;        /* from gravity and force, m/s^2 */
@@ -214,7 +215,12 @@ static inline velocity load_velocity(const solver_body *b)
     return v;
 }
 
-static inline pg_fix clamp_velocity(int64_t v) { return (pg_fix)(v > VELOCITY_MAX ? VELOCITY_MAX : v < -VELOCITY_MAX ? -VELOCITY_MAX : v); }
+static inline pg_fix clamp_velocity(int64_t v)
+{
+    /* one unsigned comparison on the common path: v in [-VELOCITY_MAX, VELOCITY_MAX] */
+    if ((uint64_t)(v + VELOCITY_MAX) <= (uint64_t)(2 * VELOCITY_MAX)) return (pg_fix)v;
+    return (pg_fix)(v > 0 ? VELOCITY_MAX : -VELOCITY_MAX);
+}
 
 static inline void store_velocity(solver_body *b, const velocity *v)
 {
@@ -244,60 +250,75 @@ static inline int64_t relative_speed(const velocity *A, const velocity *B, pg_di
 static inline void anchor_now(const solver_body *b, pg_vec2 r, int round, int64_t *x, int64_t *y)
 {
     if (round) { /* a circle's surface point along the normal does not turn with it */
-        *x = (int64_t)b->c.x - b->c0.x + r.x;
-        *y = (int64_t)b->c.y - b->c0.y + r.y;
+        *x = (int64_t)b->dp.x + r.x;
+        *y = (int64_t)b->dp.y + r.y;
         return;
     }
-    *x = (int64_t)b->c.x - b->c0.x + pg__round_shift64((int64_t)b->dq.c * r.x - (int64_t)b->dq.s * r.y, 30);
-    *y = (int64_t)b->c.y - b->c0.y + pg__round_shift64((int64_t)b->dq.s * r.x + (int64_t)b->dq.c * r.y, 30);
+    *x = (int64_t)b->dp.x + pg__round_shift64((int64_t)b->dq.c * r.x - (int64_t)b->dq.s * r.y, 30);
+    *y = (int64_t)b->dp.y + pg__round_shift64((int64_t)b->dq.s * r.x + (int64_t)b->dq.c * r.y, 30);
 }
 
 static inline int64_t clamp_lambda(int64_t acc, int64_t lo, int64_t hi) { return acc < lo ? lo : acc > hi ? hi : acc; }
+
+/* One friction row: the tangent "impulse" within +-f (Kt/Kn) lambda_n. */
+static inline void solve_friction(velocity *va, velocity *vb, constraint_point *p, pg_dir t)
+{
+    int64_t max_f = pg__round_shift64((int64_t)p->friction_ratio * p->normal_impulse, 16), acc;
+    if (max_f > LAMBDA_MAX) max_f = LAMBDA_MAX;
+    acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(va, vb, t, p->ctA, p->ctB), -max_f, max_f);
+    apply_row(va, vb, acc - p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+    p->tangent_impulse = (pg_fix)acc;
+}
+
+/* One normal row, soft (use_bias) or rigid (relax), speculative where the gap is open. */
+static inline void solve_normal(const step_context *ctx, const softness *soft, const constraint *c, const solver_body *A,
+                                const solver_body *B, velocity *va, velocity *vb, constraint_point *p, int use_bias)
+{
+    const pg_dir n = c->n;
+    int64_t ax, ay, bx, by, s, acc, rel;
+    /* current separation from where the anchors are now */
+    anchor_now(A, p->rA, c->round_a, &ax, &ay);
+    anchor_now(B, p->rB, c->round_b, &bx, &by);
+    s = pg__round_shift64(n.x * (bx - ax) + n.y * (by - ay), 30) + p->adjusted_separation;
+    rel = relative_speed(va, vb, n, p->cnA, p->cnB);
+    if (s > 0) {
+        /* speculative: close the gap in one substep, no more */
+        acc = (int64_t)p->normal_impulse - (rel + s * ctx->n);
+    } else if (use_bias) {
+        int64_t bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
+        if (bias < -ctx->push_max) bias = -ctx->push_max;
+        acc = (int64_t)p->normal_impulse - pg__round_shift64(soft->mass_scale * (rel + bias), 30) -
+              pg__round_shift64((int64_t)soft->impulse_scale * p->normal_impulse, 30);
+    } else {
+        acc = (int64_t)p->normal_impulse - rel;
+    }
+    acc = clamp_lambda(acc, 0, LAMBDA_MAX);
+    apply_row(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+    p->normal_impulse = (pg_fix)acc;
+    if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
+}
 
 static void solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     velocity va = load_velocity(A), vb = load_velocity(B);
     const softness *soft = c->soft_static ? &ctx->soft_static : &ctx->soft;
-    const pg_dir n = c->n;
+    /* the two points alternate which goes first (see SYMMETRY above) */
+    constraint_point *first = &c->p[0], *second = c->count > 1 ? &c->p[1] : NULL;
     pg_dir t;
-    int32_t k;
-    t.x = n.y;
-    t.y = -n.x;
+    t.x = c->n.y;
+    t.y = -c->n.x;
+    if (second != NULL && order) {
+        first = &c->p[1];
+        second = &c->p[0];
+    }
     /* friction first: keeping bodies apart matters more than keeping them from sliding */
     if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
-        for (k = 0; k < c->count; ++k) {
-            constraint_point *p = &c->p[order ? c->count - 1 - k : k];
-            int64_t max_f = pg__round_shift64((int64_t)p->friction_ratio * p->normal_impulse, 16);
-            int64_t acc;
-            if (max_f > LAMBDA_MAX) max_f = LAMBDA_MAX;
-            acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(&va, &vb, t, p->ctA, p->ctB), -max_f, max_f);
-            apply_row(&va, &vb, acc - p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
-            p->tangent_impulse = (pg_fix)acc;
-        }
+        solve_friction(&va, &vb, first, t);
+        if (second != NULL) solve_friction(&va, &vb, second, t);
     }
-    for (k = 0; k < c->count; ++k) {
-        constraint_point *p = &c->p[order ? c->count - 1 - k : k];
-        int64_t ax, ay, bx, by, s, bias = 0, mass_scale = PG_ROT_ONE, impulse_scale = 0, acc;
-        /* current separation from where the anchors are now */
-        anchor_now(A, p->rA, c->round_a, &ax, &ay);
-        anchor_now(B, p->rB, c->round_b, &bx, &by);
-        s = pg__round_shift64(n.x * (bx - ax) + n.y * (by - ay), 30) + p->adjusted_separation;
-        if (s > 0) {
-            bias = s * ctx->n; /* speculative: close the gap in one substep, no more */
-        } else if (use_bias) {
-            bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
-            if (bias < -ctx->push_max) bias = -ctx->push_max;
-            mass_scale = soft->mass_scale;
-            impulse_scale = soft->impulse_scale;
-        }
-        acc = (int64_t)p->normal_impulse - pg__round_shift64(mass_scale * (relative_speed(&va, &vb, n, p->cnA, p->cnB) + bias), 30) -
-              pg__round_shift64(impulse_scale * p->normal_impulse, 30);
-        acc = clamp_lambda(acc, 0, LAMBDA_MAX);
-        apply_row(&va, &vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
-        p->normal_impulse = (pg_fix)acc;
-        if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
-    }
+    solve_normal(ctx, soft, c, A, B, &va, &vb, first, use_bias);
+    if (second != NULL) solve_normal(ctx, soft, c, A, B, &va, &vb, second, use_bias);
     store_velocity(A, &va);
     store_velocity(B, &vb);
 }
@@ -363,7 +384,7 @@ void pg__solve(pg_world *w)
         solver_body *d = &bodies[dummy];
         d->v = pg_v2_zero();
         d->w = 0;
-        d->c0 = d->c = pg_v2_zero();
+        d->c0 = d->c = d->dp = pg_v2_zero();
         d->a0 = d->a = 0;
         d->dq = pg_rot_identity();
     }
@@ -378,6 +399,7 @@ void pg__solve(pg_world *w)
         sb->v = pg_v2(clamp_velocity(b->v.x), clamp_velocity(b->v.y)); /* the kernel's bounds */
         sb->w = rotation ? clamp_velocity(b->w) : 0;
         sb->c0 = sb->c = b->center;
+        sb->dp = pg_v2_zero();
         sb->a0 = sb->a = b->angle;
         sb->dq = pg_rot_identity();
         sb->accel = pg_v2_zero();
@@ -496,6 +518,7 @@ void pg__solve(pg_world *w)
             solver_body *sb = &bodies[active[i]];
             sb->c.x = pg__sat64((int64_t)sb->c.x + pg__round_shift64((int64_t)sb->v.x * ctx.h_q32, 32));
             sb->c.y = pg__sat64((int64_t)sb->c.y + pg__round_shift64((int64_t)sb->v.y * ctx.h_q32, 32));
+            sb->dp = pg_v2((pg_fix)((int64_t)sb->c.x - sb->c0.x), (pg_fix)((int64_t)sb->c.y - sb->c0.y));
             if (rotation && sb->w != 0) {
                 sb->a += (pg_angle)(uint64_t)pg__round_shift64((int64_t)sb->w * ctx.angle_per_w, 24);
                 sb->dq = pg_rot_from_angle(sb->a - sb->a0);
