@@ -21,12 +21,6 @@ pg_body_def pg_default_body_def(void)
     return d;
 }
 
-int pg__body_is_active(const pg_body *b)
-{
-    return (b->flags & (PG_BODY_FLAG_USED | PG_BODY_FLAG_AWAKE)) == (PG_BODY_FLAG_USED | PG_BODY_FLAG_AWAKE) &&
-           b->type != PG_BODY_STATIC;
-}
-
 static int in_position_envelope(pg_vec2 p)
 {
     return p.x >= -PG_ENV_MAX_POSITION && p.x <= PG_ENV_MAX_POSITION && p.y >= -PG_ENV_MAX_POSITION && p.y <= PG_ENV_MAX_POSITION;
@@ -44,7 +38,7 @@ static pg_result check_speed(const pg_world *world, pg_vec2 v)
 
 /* The speed cap acts on the magnitude: a faster velocity is scaled down to the cap,
  * keeping its direction, and the event is counted in stats.speed_clamps. */
-pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v)
+pg_vec2 pg__clamp_speed_slow(pg_world *world, pg_vec2 v)
 {
     int64_t cap = world->def.max_linear_speed, len;
     if (speed_squared(v) <= cap * cap) return v;

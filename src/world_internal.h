@@ -133,8 +133,21 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index);
 int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, const pg_geom *extra, pg_fix extra_density);
 void pg__body_sync_geometry(pg_world *world, uint32_t body_index); /* world geoms + boxes */
 void pg__wake_body(pg_world *world, uint32_t body_index);         /* and its island */
-int pg__body_is_active(const pg_body *b); /* awake and movable: takes part in the solver */
-pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v);                /* the documented speed cap */
+/* awake and movable: takes part in the solver (inline: the step asks per body and per contact) */
+static inline int pg__body_is_active(const pg_body *b)
+{
+    return (b->flags & (PG_BODY_FLAG_USED | PG_BODY_FLAG_AWAKE)) == (PG_BODY_FLAG_USED | PG_BODY_FLAG_AWAKE) &&
+           b->type != PG_BODY_STATIC;
+}
+/* The documented speed cap: the inline test passes every legal velocity through, the
+ * out-of-line part scales a faster one down and counts it. */
+pg_vec2 pg__clamp_speed_slow(pg_world *world, pg_vec2 v);
+static inline pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v)
+{
+    int64_t cap = world->def.max_linear_speed;
+    if ((int64_t)v.x * v.x + (int64_t)v.y * v.y <= cap * cap) return v;
+    return pg__clamp_speed_slow(world, v);
+}
 
 /* shape.c */
 void pg__shape_build_local(const pg_geometry *g, pg_geom *out); /* collision form of a geometry */
