@@ -151,9 +151,20 @@ static pg_fix dot_dv(pg_dir d, pg_vec2 v) { return (pg_fix)pg__round_shift64((in
  * overflow (|a| < 2^41, |c| < 2^21: ordinary bodies), the 128-bit path otherwise. */
 static inline int64_t mul_q16(int64_t a, pg_fix c)
 {
-    if (a == 0 || c == 0) return 0;
+    uint64_t ua, uc, hi, lo, r;
+    if (a == 0 || c == 0) return 0; /* often: a circle's anchor lies on its normal */
     if (a < (INT64_C(1) << 41) && a > -(INT64_C(1) << 41) && c < (1 << 21) && c > -(1 << 21)) return pg__round_shift64(a * c, 16);
-    return pg__mul64_shr(a, c, 16);
+    /* |a| |c| = hi 2^32 + lo with hi = (|a| >> 32) |c| < 2^62 and lo = (|a| mod 2^32) |c|
+     * < 2^63, so round(|a| |c| / 2^16) = hi 2^16 + (lo + 2^15) / 2^16, rounded the same
+     * way as pg__mul64_shr (nearest, ties away from zero) and saturated like it. */
+    ua = pg__mag64(a);
+    uc = pg__mag64(c);
+    hi = (ua >> 32) * uc;
+    lo = ((ua & 0xFFFFFFFFu) * uc + 0x8000u) >> 16;
+    if (hi >= (UINT64_C(1) << 47)) return (a < 0) != (c < 0) ? -INT64_MAX : INT64_MAX;
+    r = (hi << 16) + lo; /* < 2^63 + 2^47: may pass INT64_MAX */
+    if (r > (uint64_t)INT64_MAX) r = (uint64_t)INT64_MAX;
+    return (a < 0) != (c < 0) ? -(int64_t)r : (int64_t)r;
 }
 
 /* Coefficients of one row (normal or tangent) for one point; returns the row's
