@@ -640,15 +640,6 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
     const softness *soft = c->soft_static ? &ctx->soft_static : &ctx->soft;
     vec n = c->n, t = v2(n.y, -n.x);
     int k;
-    if (ctx->friction) {
-        for (k = 0; k < c->count; ++k) {
-            spoint *p = &c->p[order ? c->count - 1 - k : k];
-            double vt = rel_speed(A, B, t, p->ctA, p->ctB), max_f = p->friction_ratio * p->ln, acc = p->lt - vt;
-            acc = acc < -max_f ? -max_f : acc > max_f ? max_f : acc;
-            apply(A, B, acc - p->lt, p->ltA, p->ltB, p->gtA, p->gtB);
-            p->lt = acc;
-        }
-    }
     for (k = 0; k < c->count; ++k) {
         spoint *p = &c->p[order ? c->count - 1 - k : k];
         vec da = anchor_now(A, p->rA, c->round_a), db = anchor_now(B, p->rB, c->round_b);
@@ -667,6 +658,15 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         apply(A, B, acc - p->ln, p->lnA, p->lnB, p->gnA, p->gnB);
         p->ln = acc;
         if (acc > p->max_ln) p->max_ln = acc;
+    }
+    if (ctx->friction) {
+        for (k = 0; k < c->count; ++k) {
+            spoint *p = &c->p[order ? c->count - 1 - k : k];
+            double vt = rel_speed(A, B, t, p->ctA, p->ctB), max_f = p->friction_ratio * p->ln, acc = p->lt - vt;
+            acc = acc < -max_f ? -max_f : acc > max_f ? max_f : acc;
+            apply(A, B, acc - p->lt, p->ltA, p->ltB, p->gtA, p->gtB);
+            p->lt = acc;
+        }
     }
 }
 

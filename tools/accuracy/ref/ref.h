@@ -13,7 +13,7 @@
  * the soft step: per substep integrate velocities, warm start, solve with a soft bias
  * (hertz capped at a quarter of the substep rate, doubled against static bodies, damping
  * ratio, push-out cap), integrate positions, relax without bias; restitution once
- * after the substeps (threshold 1 m/s); Coulomb friction solved before the normal rows;
+ * after the substeps (threshold 1 m/s); Coulomb friction solved after the normal rows;
  * the points of a manifold in alternating order; anchors on each body's own surface (a
  * circle's does not turn with it). Impulses are stored, as in pogon, as
  * the velocity change they cause (m/s). No sleeping, no damping, no speed cap.
