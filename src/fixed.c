@@ -1,5 +1,6 @@
 /* fixed.c — the out-of-line Q16.16 scalar operations: division, ratios, square root,
  * decimal parsing and formatting. The rounding rule is the one in fixed.h. */
+#include "pogon/config.h"
 #include "pogon/fixed.h"
 
 static uint64_t magnitude64(int64_t v) { return v < 0 ? (uint64_t)(-(v + 1)) + 1u : (uint64_t)v; }
@@ -79,15 +80,33 @@ pg_fix_status pg_fix_mul_checked(pg_fix a, pg_fix b, pg_fix *out)
     return from_wide(pg__round_shift64((int64_t)a * b, 16), out);
 }
 
-uint32_t pg_isqrt64(uint64_t v)
+/* ---- integer square root ----------------------------------------------------------
+ * Two exact implementations of floor(sqrt(v)); PG_FAST_DIV64 (config.h) picks the one
+ * behind pg_isqrt64. Both return the same value for every v (the unit test compares
+ * them), so the switch changes speed only, never a result. */
+
+/* Number of significant bits of v (0 for v == 0). */
+static int isqrt_bit_length(uint64_t v)
 {
-    /* Digit-by-digit square root, branch-free in its loop (a data-dependent branch
-     * mispredicts half the time), starting at the highest bit pair of v. */
-    uint64_t res = 0, one = (uint64_t)1 << 62, t = v;
-    int shift = 62;
-    while (shift >= 8 && (t >> (shift - 6)) == 0) shift -= 8; /* t < 2^(shift - 6): skip a byte */
-    while (shift > 0 && (t >> shift) == 0) shift -= 2;
-    one = (uint64_t)1 << shift;
+#if defined(__GNUC__) || defined(__clang__)
+    return v == 0 ? 0 : 64 - __builtin_clzll(v);
+#else
+    int n = 0;
+    while (v >= 256u) { n += 8; v >>= 8; }
+    while (v != 0) { ++n; v >>= 1; }
+    return n;
+#endif
+}
+
+/* Digit-by-digit square root, branch-free in its loop (a data-dependent branch
+ * mispredicts half the time), starting at the highest bit pair of v. Up to 32
+ * iterations; no division, so it is the choice where 64-bit division is slow. */
+static inline uint32_t isqrt64_digits(uint64_t v)
+{
+    uint64_t res = 0, one;
+    int shift = isqrt_bit_length(v) - 1; /* highest set bit; -1 for v == 0 */
+    if (shift < 0) return 0;
+    one = (uint64_t)1 << (shift & ~1);   /* the highest power of 4 <= v */
     while (one != 0) {
         uint64_t b = res + one;
         uint64_t ge = (uint64_t)0 - (uint64_t)(v >= b); /* all ones when v >= b */
@@ -97,6 +116,84 @@ uint32_t pg_isqrt64(uint64_t v)
     }
     return (uint32_t)res;
 }
+
+#if PG_FAST_DIV64
+/* isqrt_nodes[i] = round(sqrt(64 + i) * 2^27), i = 0..192: sqrt on [64, 256] (that is
+ * sqrt(m) * 2^30 for m = (64 + i) / 64 in [1, 4]) at steps of 1/64 in m, from 2^30 to
+ * 2^31. Increasing, and every entry is at least 2^30. */
+static const uint32_t isqrt_nodes[193] = {
+    1073741824u, 1082097918u, 1090389977u, 1098619452u, 1106787739u, 1114896182u, 1122946079u,
+    1130938678u, 1138875187u, 1146756771u, 1154584553u, 1162359621u, 1170083026u, 1177755783u,
+    1185378878u, 1192953261u, 1200479854u, 1207959552u, 1215393219u, 1222781696u, 1230125796u,
+    1237426310u, 1244684005u, 1251899625u, 1259073893u, 1266207514u, 1273301169u, 1280355523u,
+    1287371222u, 1294348895u, 1301289153u, 1308192592u, 1315059792u, 1321891318u, 1328687719u,
+    1335449532u, 1342177280u, 1348871473u, 1355532607u, 1362161168u, 1368757628u, 1375322451u,
+    1381856086u, 1388358974u, 1394831545u, 1401274219u, 1407687407u, 1414071510u, 1420426919u,
+    1426754019u, 1433053185u, 1439324782u, 1445569171u, 1451786701u, 1457977717u, 1464142555u,
+    1470281545u, 1476395008u, 1482483261u, 1488546612u, 1494585366u, 1500599818u, 1506590260u,
+    1512556978u, 1518500250u, 1524420351u, 1530317551u, 1536192112u, 1542044294u, 1547874349u,
+    1553682529u, 1559469076u, 1565234231u, 1570978229u, 1576701302u, 1582403676u, 1588085574u,
+    1593747216u, 1599388817u, 1605010588u, 1610612736u, 1616195466u, 1621758978u, 1627303469u,
+    1632829134u, 1638336161u, 1643824740u, 1649295054u, 1654747284u, 1660181608u, 1665598202u,
+    1670997238u, 1676378885u, 1681743312u, 1687090681u, 1692421154u, 1697734891u, 1703032049u,
+    1708312781u, 1713577240u, 1718825574u, 1724057932u, 1729274458u, 1734475296u, 1739660585u,
+    1744830464u, 1749985070u, 1755124538u, 1760249000u, 1765358587u, 1770453428u, 1775533649u,
+    1780599376u, 1785650732u, 1790687838u, 1795710816u, 1800719782u, 1805714853u, 1810696145u,
+    1815663770u, 1820617842u, 1825558469u, 1830485761u, 1835399826u, 1840300769u, 1845188694u,
+    1850063706u, 1854925906u, 1859775393u, 1864612269u, 1869436629u, 1874248572u, 1879048192u,
+    1883835584u, 1888610840u, 1893374053u, 1898125312u, 1902864709u, 1907592330u, 1912308264u,
+    1917012597u, 1921705413u, 1926386797u, 1931056833u, 1935715602u, 1940363185u, 1944999662u,
+    1949625114u, 1954239618u, 1958843251u, 1963436090u, 1968018211u, 1972589688u, 1977150595u,
+    1981701005u, 1986240991u, 1990770623u, 1995289972u, 1999799107u, 2004298098u, 2008787014u,
+    2013265920u, 2017734884u, 2022193972u, 2026643249u, 2031082780u, 2035512628u, 2039932856u,
+    2044343526u, 2048744702u, 2053136442u, 2057518809u, 2061891861u, 2066255659u, 2070610259u,
+    2074955721u, 2079292101u, 2083619457u, 2087937844u, 2092247318u, 2096547933u, 2100839745u,
+    2105122807u, 2109397173u, 2113662894u, 2117920024u, 2122168614u, 2126408716u, 2130640379u,
+    2134863654u, 2139078592u, 2143285240u, 2147483648u,
+};
+
+/* One Newton step from a seed good to about 2^-16, then an exact correction.
+ *   Seed: v = m * 2^e with e even and m in [1, 4). The top 18 bits of v give m to
+ *   2^-16 (x = m * 2^16 below); the chord between the two nodes around m gives
+ *   sqrt(m) * 2^30 to about 2^-17 (sqrt is concave: the chord lies below it, by at
+ *   most h^2/8 * |sqrt''| = 2^-12 / 8 / 4 at m = 1). Scaled by 2^(e/2) it is at
+ *   least 1 (the nodes are at least 2^30), so the division below never sees 0.
+ *   Newton: r' = floor((r + floor(v / r)) / 2) = floor((r + v / r) / 2) for integer
+ *   r > 0, and (r + v / r) / 2 >= sqrt(v) for every r > 0, so r' >= floor(sqrt(v))
+ *   whatever the seed. From this seed (off by at most sqrt(v) * 2^-16 + 1, the 1 from
+ *   truncating to an integer) r' - sqrt(v) <= (r - sqrt(v))^2 / (2r) < 1 once
+ *   v >= 2^28 (about 1/2 at v = 2^64), so r' is floor(sqrt(v)) or one more; below 2^28
+ *   an exhaustive check finds the same.
+ *   Correction: step down while r^2 > v (r^2 is evaluated only once r < 2^32, so it
+ *   cannot wrap). It ends at floor(sqrt(v)) whatever the seed; the seed's quality only
+ *   keeps it at zero or one step. */
+static inline uint32_t isqrt64_newton(uint64_t v)
+{
+    uint64_t x, lo, hi, r;
+    int e;
+    if (v == 0) return 0;
+    e = (isqrt_bit_length(v) - 1) & ~1;                       /* v in [2^e, 2^(e+2)) */
+    x = e >= 16 ? v >> (e - 16) : v << (16 - e);              /* m * 2^16, in [2^16, 2^18) */
+    lo = isqrt_nodes[(x >> 10) - 64];
+    hi = isqrt_nodes[(x >> 10) - 63];
+    r = lo + (((hi - lo) * (x & 1023u)) >> 10);               /* ~ sqrt(m) * 2^30, < 2^31 */
+    r = (r << (e / 2)) >> 30;                                 /* ~ sqrt(v), >= 1 */
+    r = (r + v / r) >> 1;                                     /* r + v / r < 2^34 */
+    while (r > UINT64_C(0xFFFFFFFF) || r * r > v) --r;
+    return (uint32_t)r;
+}
+#endif
+
+uint32_t pg_isqrt64(uint64_t v)
+{
+#if PG_FAST_DIV64
+    return isqrt64_newton(v);
+#else
+    return isqrt64_digits(v);
+#endif
+}
+
+uint32_t pg__isqrt64_digits(uint64_t v) { return isqrt64_digits(v); }
 
 pg_fix_status pg_fix_sqrt_checked(pg_fix a, pg_fix *out)
 {

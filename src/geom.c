@@ -17,6 +17,19 @@
 
 static uint64_t pg__umag(int64_t v) { return v < 0 ? (uint64_t)(-(v + 1)) + 1u : (uint64_t)v; }
 
+/* Number of significant bits of v (0 for v == 0). */
+static int pg__bit_length(uint64_t v)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return v == 0 ? 0 : 64 - __builtin_clzll(v);
+#else
+    int n = 0;
+    while (v >= 256u) { n += 8; v >>= 8; }
+    while (v != 0) { ++n; v >>= 1; }
+    return n;
+#endif
+}
+
 /* Nearest integer square root of v (no ties exist for integers). */
 static uint64_t pg__sqrt_nearest(uint64_t v)
 {
@@ -38,17 +51,18 @@ pg_dir pg_dir_normalize(int64_t x, int64_t y)
      * 30+ significant bits: each component is within about 1 LSB of Q30. */
     uint64_t ax = pg__umag(x), ay = pg__umag(y), big = ax > ay ? ax : ay, len, s;
     pg_dir d;
-    int k = 0;
+    int k;
     d.x = 0;
     d.y = 0;
     if (big == 0) return d;
-    while ((big >> k) >= (UINT64_C(1) << 31)) ++k;
+    k = pg__bit_length(big) - 31; /* big / 2^k in [2^30, 2^31) */
     if (k > 0) {
         /* floor((a + 2^(k-1)) / 2^k) without overflow: nearest, ties away from zero */
         ax = (ax >> k) + ((ax >> (k - 1)) & 1u);
         ay = (ay >> k) + ((ay >> (k - 1)) & 1u);
-    } else {
-        while (big < (UINT64_C(1) << 30)) { big <<= 1; ax <<= 1; ay <<= 1; }
+    } else if (k < 0) {
+        ax <<= -k;
+        ay <<= -k;
     }
     s = ax * ax + ay * ay; /* <= 2^63 */
     len = pg__sqrt_nearest(s);

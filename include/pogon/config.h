@@ -20,4 +20,19 @@
 #error "PG_TRIG_TABLE_BITS must be between 8 and 12"
 #endif
 
+/* How pg_isqrt64 (and so every length, distance and normalisation) computes its
+ * integer square root. 1 (default): a table seed, one Newton step with a 64-bit
+ * division and an exact correction, several times faster where 64-bit division is a
+ * hardware instruction (x86-64, AArch64, ...). 0: the digit-by-digit loop (up to 32
+ * iterations, shifts and adds only), for targets without a hardware 64-bit divider,
+ * such as Cortex-M (and most 32-bit targets), where each 64-bit division is a library
+ * call. Both return exactly floor(sqrt(v)): the switch changes speed only,
+ * never a result, so builds with different settings stay bit-identical. */
+#ifndef PG_FAST_DIV64
+#define PG_FAST_DIV64 1
+#endif
+#if PG_FAST_DIV64 != 0 && PG_FAST_DIV64 != 1
+#error "PG_FAST_DIV64 must be 0 or 1"
+#endif
+
 #endif

@@ -158,8 +158,13 @@ pg_fix_status pg_fix_sqrt_checked(pg_fix a, pg_fix *out);
 /* 1/a, rounded, saturating (pg_fix_div(PG_FIX_ONE, a)). */
 pg_fix pg_fix_recip(pg_fix a);
 
-/* Integer square root of a 64-bit value, floor. Used for lengths of int64 sums. */
+/* Integer square root of a 64-bit value, floor. Used for lengths of int64 sums. How it
+ * is computed depends on PG_FAST_DIV64 (config.h); what it returns does not. */
 uint32_t pg_isqrt64(uint64_t v);
+/* Internal, not part of the API: the digit-by-digit implementation behind pg_isqrt64
+ * when PG_FAST_DIV64 is 0, exported whatever the setting so that the unit test checks
+ * it against the other one. */
+uint32_t pg__isqrt64_digits(uint64_t v);
 
 /* ---- angles and trigonometry ------------------------------------------------ */
 

@@ -503,11 +503,14 @@ static void test_sqrt(void **state)
     }
 }
 
+/* pg_isqrt64 (whichever implementation PG_FAST_DIV64 picked) and the digit-by-digit one
+ * (pg__isqrt64_digits, used when PG_FAST_DIV64 is 0) must both return the floor. */
 static void check_isqrt64(uint64_t v)
 {
-    uint32_t r = pg_isqrt64(v);
+    uint32_t r = pg_isqrt64(v), d = pg__isqrt64_digits(v);
     pgt_u128 r2 = (pgt_u128)r * r, r12 = (pgt_u128)((uint64_t)r + 1) * ((uint64_t)r + 1);
     if (!(r2 <= v && v < r12)) fail_msg("pg_isqrt64(%llu) = %u is not the floor", (unsigned long long)v, r);
+    if (d != r) fail_msg("pg__isqrt64_digits(%llu) = %u, pg_isqrt64 = %u", (unsigned long long)v, d, r);
 }
 
 static void test_isqrt64(void **state)
@@ -532,6 +535,30 @@ static void test_isqrt64(void **state)
         if (k > 0) check_isqrt64(k * k - 1);
         check_isqrt64(k * k + 1);
         check_isqrt64(pgt_next(&r) >> pgt_below(&r, 64));
+    }
+    /* Every bit length, 65536 values each (4.2 million): the top bit set, the rest random,
+     * and the smallest and largest values of that length. */
+    for (int bits = 1; bits <= 64; ++bits) {
+        uint64_t top = UINT64_C(1) << (bits - 1), rest = top - 1u;
+        check_isqrt64(top);
+        check_isqrt64(top | rest);
+        for (int i = 0; i < 65536; ++i) check_isqrt64(top | (pgt_next(&r) & rest));
+    }
+    /* Squares and their neighbours, k^2 - 1, k^2, k^2 + 1, for k near every power of two
+     * up to 2^32 - 1 (the floor changes at k^2; the Newton step lands one above the
+     * floor just below it). */
+    for (int j = 0; j <= 32; ++j) {
+        uint64_t c = UINT64_C(1) << j;
+        for (uint64_t k = c > 64u ? c - 64u : 0u; k <= c + 64u && k <= UINT64_C(0xFFFFFFFF); ++k) {
+            check_isqrt64(k * k);
+            if (k > 0) check_isqrt64(k * k - 1u);
+            check_isqrt64(k * k + 1u);
+        }
+    }
+    for (uint64_t k = UINT64_C(0xFFFFFFFF) - 4096u; k <= UINT64_C(0xFFFFFFFF); ++k) {
+        check_isqrt64(k * k);
+        check_isqrt64(k * k - 1u);
+        check_isqrt64(k * k + 1u);
     }
 }
 
