@@ -155,6 +155,9 @@ pg_result pg__validate_geometry(const pg_geometry *g);             /* what pg_sh
 
 /* contact.c */
 pg_result pg__update_contacts(pg_world *world);
+/* When no body is awake and no geometry is dirty, pg__update_contacts keeps every contact
+ * as it is unless a shape has gone or a filter has changed since: this says it would. */
+int pg__contacts_at_rest(const pg_world *world);
 void pg__remove_body_contacts(pg_world *world, uint32_t body_index);
 void pg__refresh_contact_materials(pg_world *world, uint32_t body_index); /* after a friction/restitution change */
 

@@ -302,6 +302,91 @@ static void test_sliding_box_decelerates_at_mu_g(void **state)
     free_world(&t);
 }
 
+/* ---- a world at rest skips its step exactly -------------------------------------------------------------- */
+/* When every body sleeps and no command changed anything, pg_world_step skips the contact
+ * update, the solver and the sleep pass. World B holds the same stack plus a kinematic box
+ * far away that never sleeps, so B always takes the full step: the stack must behave the
+ * same in both while it settles, falls asleep and rests, when a filter change ends a
+ * contact and when an impulse wakes it. (The replay corpus checks the same against hashes
+ * recorded through the full step: pyramid.pgr rests for 191 of its frames.) */
+static void build_rest_stack(test_world *t, pg_body_id *box, int with_sentinel)
+{
+    pg_shape_def sd = pg_default_shape_def();
+    int i;
+    *t = make_world(PG_EFFECTS_ALL);
+    make_ground(t->w, sd.friction, 0);
+    for (i = 0; i < 3; ++i) {
+        pg_body_def bd = dynamic_at(0, 0.5 + i);
+        assert_int_equal(pg_make_box(t->w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &box[i]), PG_OK);
+    }
+    if (with_sentinel) {
+        pg_body_def kd = pg_default_body_def();
+        pg_body_id k;
+        kd.type = PG_BODY_KINEMATIC;
+        kd.position = pg_v2(PG_FIX_C(300), PG_FIX_C(300));
+        kd.allow_sleep = 0;
+        assert_int_equal(pg_make_box(t->w, &kd, &sd, PG_FIX_ONE, PG_FIX_ONE, &k), PG_OK);
+    }
+}
+
+static void expect_same_stack(const test_world *a, const pg_body_id *ba, const test_world *b, const pg_body_id *bb, const char *when)
+{
+    int i;
+    uint32_t ea, eb;
+    for (i = 0; i < 3; ++i) {
+        pg_vec2 pa = pg_body_position(a->w, ba[i]), pb = pg_body_position(b->w, bb[i]);
+        pg_vec2 va = pg_body_linear_velocity(a->w, ba[i]), vb = pg_body_linear_velocity(b->w, bb[i]);
+        if (pa.x != pb.x || pa.y != pb.y || va.x != vb.x || va.y != vb.y || pg_body_angle(a->w, ba[i]) != pg_body_angle(b->w, bb[i]) ||
+            pg_body_angular_velocity(a->w, ba[i]) != pg_body_angular_velocity(b->w, bb[i]) ||
+            pg_body_is_awake(a->w, ba[i]) != pg_body_is_awake(b->w, bb[i]))
+            fail_msg("%s: box %d differs between the skipping world and the full-step world", when, i);
+    }
+    assert_int_equal(pg_world_get_stats(a->w).contact_count, pg_world_get_stats(b->w).contact_count);
+    assert_int_equal(pg_world_get_stats(a->w).touching_contact_count, pg_world_get_stats(b->w).touching_contact_count);
+    (void)pg_world_end_events(a->w, &ea);
+    (void)pg_world_end_events(b->w, &eb);
+    assert_int_equal(ea, eb);
+}
+
+static void test_world_at_rest_skips_step_exactly(void **state)
+{
+    test_world a, b;
+    pg_body_id ba[3], bb[3];
+    int i, ends = 0;
+    (void)state;
+    build_rest_stack(&a, ba, 0);
+    build_rest_stack(&b, bb, 1);
+    for (i = 0; i < 200; ++i) {
+        step_n(a.w, 1);
+        step_n(b.w, 1);
+        expect_same_stack(&a, ba, &b, bb, "settling and sleeping");
+    }
+    assert_int_equal(pg_world_get_stats(a.w).awake_body_count, 0); /* a took the short step for a while */
+    assert_int_equal(pg_world_get_stats(b.w).awake_body_count, 1); /* b never did */
+    /* a filter change (it wakes the box) ends the top box's contact */
+    assert_int_equal(pg_body_set_filter(a.w, ba[2], 1u, 0u), PG_OK);
+    assert_int_equal(pg_body_set_filter(b.w, bb[2], 1u, 0u), PG_OK);
+    for (i = 0; i < 5; ++i) {
+        uint32_t n;
+        step_n(a.w, 1);
+        step_n(b.w, 1);
+        (void)pg_world_end_events(a.w, &n);
+        ends += (int)n;
+        expect_same_stack(&a, ba, &b, bb, "after the filter change");
+    }
+    assert_int_equal(ends, 1);
+    /* an impulse wakes the stack; the top box now falls through the middle one */
+    assert_int_equal(pg_body_apply_linear_impulse(a.w, ba[1], pg_v2(PG_FIX_ONE, 0), pg_body_position(a.w, ba[1])), PG_OK);
+    assert_int_equal(pg_body_apply_linear_impulse(b.w, bb[1], pg_v2(PG_FIX_ONE, 0), pg_body_position(b.w, bb[1])), PG_OK);
+    for (i = 0; i < 120; ++i) {
+        step_n(a.w, 1);
+        step_n(b.w, 1);
+        expect_same_stack(&a, ba, &b, bb, "after the impulse");
+    }
+    free_world(&a);
+    free_world(&b);
+}
+
 /* ---- friction on a slope --------------------------------------------------------------------------- */
 #define SLOPE_DEG 20.0
 
@@ -839,6 +924,7 @@ int main(void)
         cmocka_unit_test(test_rotation_effect_off_keeps_spin_angle),
         cmocka_unit_test(test_box_comes_to_rest),
         cmocka_unit_test(test_sliding_box_decelerates_at_mu_g),
+        cmocka_unit_test(test_world_at_rest_skips_step_exactly),
         cmocka_unit_test(test_slope_static_friction_holds),
         cmocka_unit_test(test_slope_kinetic_friction),
         cmocka_unit_test(test_slope_friction_effect_off),
