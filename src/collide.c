@@ -220,11 +220,13 @@ static int64_t pg__max_separation(const pg_geom *a, const pg_geom *b, int32_t *e
     *edge = 0;
     for (i = 0; i < a->count; ++i) {
         pg_dir n = a->normals[i];
-        int64_t off2 = pg__face_off2(a, i), si = INT64_MAX;
+        int64_t lo = INT64_MAX, si;
+        /* the deepest vertex of b along n; sep2 = 2 (v . n) - off2 is increasing in v . n */
         for (j = 0; j < b->count; ++j) {
-            int64_t s = pg__sep2(b->vertices[j], n, off2);
-            if (s < si) si = s;
+            int64_t d = pg__vdot46(b->vertices[j], n);
+            if (d < lo) lo = d;
         }
+        si = 2 * lo - pg__face_off2(a, i);
         if (si > best) { best = si; *edge = i; }
     }
     return best;
