@@ -195,6 +195,17 @@ uint32_t pg_isqrt64(uint64_t v)
 
 uint32_t pg__isqrt64_digits(uint64_t v) { return isqrt64_digits(v); }
 
+const uint32_t *pg__isqrt64_seed_nodes(uint32_t *count)
+{
+#if PG_FAST_DIV64
+    *count = (uint32_t)(sizeof isqrt_nodes / sizeof isqrt_nodes[0]);
+    return isqrt_nodes;
+#else
+    *count = 0;
+    return 0;
+#endif
+}
+
 pg_fix_status pg_fix_sqrt_checked(pg_fix a, pg_fix *out)
 {
     uint64_t v;

@@ -165,6 +165,10 @@ uint32_t pg_isqrt64(uint64_t v);
  * when PG_FAST_DIV64 is 0, exported whatever the setting so that the unit test checks
  * it against the other one. */
 uint32_t pg__isqrt64_digits(uint64_t v);
+/* Internal, for the unit test: the seed table of the Newton implementation (entry i is
+ * round(sqrt(64 + i) 2^27)), or NULL and *count = 0 when PG_FAST_DIV64 is 0. Its values
+ * decide only how fast pg_isqrt64 is, never what it returns; the test checks them. */
+const uint32_t *pg__isqrt64_seed_nodes(uint32_t *count);
 
 /* ---- angles and trigonometry ------------------------------------------------ */
 

@@ -513,6 +513,24 @@ static void check_isqrt64(uint64_t v)
     if (d != r) fail_msg("pg__isqrt64_digits(%llu) = %u, pg_isqrt64 = %u", (unsigned long long)v, d, r);
 }
 
+/* The Newton implementation's seed nodes are round(sqrt(64 + i) 2^27): checked exactly,
+ * as the generator's output is for the sine table. r = floor(sqrt(x)) for x = (64 + i) 2^54,
+ * and the nearest integer is r + 1 when x - r^2 > r (no ties for integers). */
+static void test_isqrt64_seed_nodes(void **state)
+{
+    uint32_t count = 0, i;
+    const uint32_t *nodes = pg__isqrt64_seed_nodes(&count);
+    (void)state;
+    if (nodes == NULL) skip();
+    assert_int_equal(count, 193);
+    for (i = 0; i < count; ++i) {
+        uint64_t x = (uint64_t)(64u + i) << 54;
+        uint64_t r = pg__isqrt64_digits(x);
+        if (x - r * r > r) ++r;
+        if (nodes[i] != r) fail_msg("isqrt seed node %u is %u, round(sqrt(%u) 2^27) is %llu", i, nodes[i], 64u + i, (unsigned long long)r);
+    }
+}
+
 static void test_isqrt64(void **state)
 {
     static const uint64_t edges[] = {
@@ -981,6 +999,7 @@ int main(void)
         cmocka_unit_test(test_div_random),
         cmocka_unit_test(test_from_ratio),
         cmocka_unit_test(test_sqrt),
+        cmocka_unit_test(test_isqrt64_seed_nodes),
         cmocka_unit_test(test_isqrt64),
         cmocka_unit_test(test_status_messages),
         cmocka_unit_test(test_format_exact),
