@@ -15,6 +15,10 @@
  *                         as a subprocess when it was built next to this program) for
  *                         pyramid and rain 1000, with sleeping on and with it off.
  *   --no-sleep            PG_EFFECT_SLEEPING off (in Box2D: SetAllowSleeping(false)).
+ *   --warmup-runs K       K whole untimed runs before the timed ones (default 0). For the
+ *                         wasm build under node: V8 compiles wasm in tiers while it runs,
+ *                         so the first runs of a short scene measure the compiler, not the
+ *                         code (tools/bench/peers gives node's engines 2).
  *
  * Method: a run builds the scene (the shared tools/scenes code, memory from malloc),
  * takes `warmup` untimed steps (0 unless stated), then times `steps` steps with
@@ -114,6 +118,8 @@ static int parse_u32(const char *text, uint32_t *out)
 }
 
 /* ---- one measurement ------------------------------------------------------------------ */
+static uint32_t g_warmup_runs; /* --warmup-runs: whole runs before the timed ones */
+
 /* Build `scene` `repeat` times with `effects`, step `warmup` untimed then `steps` timed.
  * Returns 0 on success; prints the failure otherwise. */
 static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t warmup, uint32_t repeat,
@@ -144,7 +150,7 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
         fprintf(stderr, "pogon-bench: %s %u: pg_world_memory_size refused the world definition\n", scene, count);
         return 1;
     }
-    for (r = 0; r < repeat; ++r) {
+    for (r = 0; r < g_warmup_runs + repeat; ++r) {
         pg_scene sc;
         pg_result pr;
         pg_world_stats st;
@@ -174,7 +180,11 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
             free(memory);
             return 1;
         }
-        runs[r] = (t1 - t0) / (double)steps;
+        if (r < g_warmup_runs) {
+            free(memory);
+            continue;
+        }
+        runs[r - g_warmup_runs] = (t1 - t0) / (double)steps;
         /* every run is bit-identical, so the last one's state is the state */
         {
             pg_vec2 p = pg_body_position(sc.world, sc.top);
@@ -203,9 +213,9 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
 /* ---- output --------------------------------------------------------------------------- */
 static void print_json(const result *r)
 {
-    printf("{\"engine\":\"pogon\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":%u,\"repeat\":%u,"
+    printf("{\"engine\":\"pogon\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":%u,\"warmup_runs\":%u,\"repeat\":%u,"
            "\"effects\":%u,\"trig_table_bits\":%d,",
-           r->scene, r->count, r->bodies, r->steps, r->warmup, r->repeat, r->effects, PG_TRIG_TABLE_BITS);
+           r->scene, r->count, r->bodies, r->steps, r->warmup, g_warmup_runs, r->repeat, r->effects, PG_TRIG_TABLE_BITS);
     if (r->label != NULL) printf("\"variant\":\"%s\",", r->label);
     printf("\"ms_per_step\":%.6f,\"ms_min\":%.6f,\"ms_max\":%.6f,\"steps_per_second\":%.2f,", r->ms_per_step, r->ms_min,
            r->ms_max, r->steps_per_second);
@@ -512,7 +522,7 @@ static int mode_compare(const char *argv0, const options *o)
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n"
+            "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--json] [--no-sleep]\n"
             "       pogon-bench all | effects [SCENE] | memory | compare   [options]\n"
             "scenes: pyramid (count = rows, default 20), stack (boxes, default 20), rain (circles, default 1000)\n"
             "steps default to 600 (pyramid, stack) and 300 (rain); repeat defaults to 3 (median reported)\n");
@@ -539,6 +549,14 @@ int main(int argc, char **argv)
             if (a[2] == 'c') o.count = v;
             else if (a[2] == 's') o.steps = v;
             else o.repeat = v > MAX_REPEAT ? MAX_REPEAT : v;
+            ++i;
+        } else if (strcmp(a, "--warmup-runs") == 0) {
+            uint32_t v;
+            if (i + 1 >= argc || !parse_u32(argv[i + 1], &v) || v > 100) {
+                fprintf(stderr, "pogon-bench: --warmup-runs needs an integer from 0 to 100\n");
+                return 2;
+            }
+            g_warmup_runs = v;
             ++i;
         } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             usage(stdout);

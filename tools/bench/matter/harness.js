@@ -2,7 +2,7 @@
 // harness.js — the pogon-bench scenes in matter.js (npm matter-js, the version pinned in
 // package.json; `npm ci` here installs it), for comparison. Run by tools/bench/peers.
 //
-// Usage: node harness.js SCENE [--count N] [--steps N] [--repeat R] [--json]
+// Usage: node harness.js SCENE [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--json]
 //                        [--variant defaults|best] [--sleep|--no-sleep]
 //                        [--position-iterations N] [--velocity-iterations N]
 //        node harness.js all [options]
@@ -46,12 +46,12 @@ const SCALE = 100; // units per metre
 const FRICTION = 0.6;
 
 function usage(stream) {
-    stream.write('usage: node harness.js pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json]\n' +
+    stream.write('usage: node harness.js pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--json]\n' +
                  '         [--variant defaults|best] [--sleep|--no-sleep] [--position-iterations N] [--velocity-iterations N]\n');
 }
 
 function parseArgs(argv) {
-    const o = { mode: null, count: 0, steps: 0, repeat: 3, json: false, variant: 'defaults', sleep: null,
+    const o = { mode: null, count: 0, steps: 0, repeat: 3, warmupRuns: 0, json: false, variant: 'defaults', sleep: null,
                 positionIterations: 0, velocityIterations: 0 };
     for (let i = 0; i < argv.length; ++i) {
         const a = argv[i];
@@ -70,6 +70,12 @@ function parseArgs(argv) {
             else if (a === '--repeat') o.repeat = Math.min(v, 101);
             else if (a === '--position-iterations') o.positionIterations = v;
             else o.velocityIterations = v;
+        } else if (a === '--warmup-runs') {
+            // whole untimed runs first: V8 optimises hot code while it runs, so the first
+            // runs of a short scene measure the compiler as much as the engine
+            const v = Number(argv[++i]);
+            if (!Number.isInteger(v) || v < 0 || v > 100) throw new Error('--warmup-runs needs an integer from 0 to 100');
+            o.warmupRuns = v;
         } else if (a === '--help' || a === '-h') {
             usage(process.stdout);
             process.exit(0);
@@ -152,7 +158,9 @@ function run(scene, o, countOverride) {
     const s = settingsFor(scene, o);
     const runs = [];
     const res = { scene, count, steps, repeat, s, stands: !rain };
-    for (let r = 0; r < repeat; ++r) {
+    const warm = o.warmupRuns || 0;
+    res.warmupRuns = warm;
+    for (let r = 0; r < warm + repeat; ++r) {
         const engine = Engine.create({
             positionIterations: s.positionIterations,
             velocityIterations: s.velocityIterations,
@@ -170,6 +178,7 @@ function run(scene, o, countOverride) {
         const t0 = process.hrtime.bigint();
         for (let i = 0; i < steps; ++i) Engine.update(engine, dt);
         const t1 = process.hrtime.bigint();
+        if (r < warm) continue;
         runs.push(Number(t1 - t0) / 1e6 / steps);
         res.dx = (top.position.x - x0) / SCALE;
         res.dy = -(top.position.y - y0) / SCALE;
@@ -191,7 +200,7 @@ function run(scene, o, countOverride) {
 function printJson(r, variant) {
     const f = (v, d) => v.toFixed(d);
     let line = `{"engine":"matter-js-${Matter.version}","variant":"${variant}","scene":"${r.scene}","count":${r.count},` +
-        `"bodies":${r.bodies},"steps":${r.steps},"warmup":0,"repeat":${r.repeat},` +
+        `"bodies":${r.bodies},"steps":${r.steps},"warmup":0,"warmup_runs":${r.warmupRuns},"repeat":${r.repeat},` +
         `"position_iterations":${r.s.positionIterations},"velocity_iterations":${r.s.velocityIterations},` +
         `"sleeping":${r.s.enableSleeping},"node":"${process.version}",` +
         `"ms_per_step":${f(r.ms, 6)},"ms_min":${f(r.msMin, 6)},"ms_max":${f(r.msMax, 6)},"steps_per_second":${f(r.sps, 2)},`;
