@@ -847,6 +847,50 @@ static void test_edge_max_speed(void **state)
     if (!ok) fail();
 }
 
+/* Bodies may leave the envelope by flying (creation is refused there, motion is not), and
+ * their positions saturate at the edge of the Q16.16 range, +-32768 m. Two boxes fly out
+ * along x at the speed cap, meet beyond 8192 m and are pushed together to the saturated
+ * edge. The collision code forms dot products of absolute Q16.16 points with Q2.30
+ * normals (below 2^61.5) and subtracts ones of the same sign for bodies whose boxes
+ * overlap, so it stays inside 63 bits out there: the sanitizer preset runs this with
+ * -fsanitize=undefined, and the chasing box never passes the one it caught. */
+static void test_edge_collisions_far_outside_the_envelope(void **state)
+{
+    test_world t = make_world(PG_EFFECTS_ALL & ~PG_EFFECT_GRAVITY & ~PG_EFFECT_SLEEPING);
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_def ba = dynamic_at(990, 0), bb = dynamic_at(960, 0);
+    pg_body_id a, b;
+    int i, met = 0, ok = 1;
+    double far_met = 0;
+    (void)state;
+    ba.linear_velocity = pg_v2(fx(399), 0);
+    bb.linear_velocity = pg_v2(fx(400), 0);
+    assert_int_equal(pg_make_box(t.w, &ba, &sd, fx(2), fx(2), &a), PG_OK);
+    assert_int_equal(pg_make_box(t.w, &bb, &sd, fx(2), fx(2), &b), PG_OK);
+    for (i = 0; i < 6000 && ok; ++i) {
+        double xa, xb;
+        step_once(t.w);
+        xa = fd(pg_body_position(t.w, a).x);
+        xb = fd(pg_body_position(t.w, b).x);
+        if (!met && xa - xb < 2.05) {
+            met = 1;
+            far_met = xa;
+        }
+        if (xb > xa) {
+            print_error("step %d: the chasing box (x %.4f) passed the one ahead (x %.4f)\n", i, xb, xa);
+            ok = 0;
+        }
+    }
+    print_message("the boxes met at x = %.1f m; after 6000 steps a is at %.1f m, b at %.1f m\n", far_met,
+                  fd(pg_body_position(t.w, a).x), fd(pg_body_position(t.w, b).x));
+    assert_true(ok);
+    assert_true(met);
+    ok &= within(-far_met, -8192.0, "where the boxes met: x (m) at least 8192");
+    ok &= within(32760.0 - fd(pg_body_position(t.w, a).x), 0.0, "box a reached the saturated edge: 32760 m - x");
+    assert_true(ok);
+    free_world(&t);
+}
+
 /* Just beyond the envelope, creation is refused with PG_ERR_ENVELOPE and the world is
  * unchanged. */
 static void expect_refused(pg_world *w, pg_result r, const char *what)
@@ -1162,6 +1206,7 @@ int main(void)
         cmocka_unit_test(test_edge_world_corners),
         cmocka_unit_test(test_edge_mass_and_inertia_exact),
         cmocka_unit_test(test_edge_max_speed),
+        cmocka_unit_test(test_edge_collisions_far_outside_the_envelope),
         cmocka_unit_test(test_edge_beyond_is_refused),
 #else
         cmocka_unit_test(test_spin_exact_for_a_million_steps),
