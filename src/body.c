@@ -167,6 +167,16 @@ int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, co
     return md.mass < INT64_MAX && md.inertia < INT64_MAX;
 }
 
+void pg__body_set_inverse_mass(pg_body *b)
+{
+    b->inv_mass = 0;
+    b->inv_inertia = 0;
+    if (b->type != PG_BODY_DYNAMIC || b->mass <= 0) return;
+    b->inv_mass = pg__div64_shl(INT64_C(1) << 32, b->mass, 38); /* 2^70 / mass */
+    if (b->inertia > 0 && (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0)
+        b->inv_inertia = pg__div64_shl(INT64_C(1) << 36, b->inertia, 38); /* 2^74 / inertia */
+}
+
 void pg__body_update_mass(pg_world *world, uint32_t body_index)
 {
     pg_body *b = &world->bodies[body_index];
@@ -192,18 +202,12 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index)
     md = pg_compound_mass(geoms, densities, n);
     if (md.mass <= 0) { /* only segments, or density 0: a point of 1 kg */
         b->mass = INT64_C(1) << 32;
-        b->inv_mass = INT64_C(1) << 38;
     } else {
         b->mass = md.mass;
-        b->inv_mass = pg__div64_shl(INT64_C(1) << 32, md.mass, 38); /* 2^70 / mass */
         b->local_center = md.center;
-        if (md.inertia > 0 && (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0) {
-            b->inertia = md.inertia;
-            b->inv_inertia = pg__div64_shl(INT64_C(1) << 36, md.inertia, 38); /* 2^74 / inertia */
-        } else {
-            b->inertia = md.inertia;
-        }
+        b->inertia = md.inertia;
     }
+    pg__body_set_inverse_mass(b);
     b->center = pg_v2_add(b->origin, pg_rot_apply(b->rot, b->local_center));
 }
 

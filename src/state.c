@@ -18,7 +18,7 @@
 #include "world_internal.h"
 
 #define SNAPSHOT_MAGIC 0x4E534750u /* "PGSN" */
-#define SNAPSHOT_VERSION 1u
+#define SNAPSHOT_VERSION 2u /* 2: inverse mass and inertia are derived, not stored */
 
 static const char *const section_names[PG_SECTION_COUNT] = {"settings", "bodies", "shapes", "contacts", "broadphase", "joints"};
 
@@ -122,13 +122,12 @@ static void encode_body(const pg_body *b, sink *s)
     if (m & B_SLEEP_TIME) emit_i32(s, b->sleep_time);
     if (m & B_ISLAND) emit_u32(s, b->island);
     if (m & B_MASS) {
-        /* stored rather than recomputed: mass properties take microseconds per shape,
-         * and rollback restores often */
+        /* stored rather than recomputed from the shapes: mass properties take microseconds
+         * per shape, and rollback restores often. The inverses are two divisions away
+         * (pg__body_set_inverse_mass), so they are not stored. */
         emit_vec(s, b->local_center);
         emit_i64(s, b->mass);
         emit_i64(s, b->inertia);
-        emit_i64(s, b->inv_mass);
-        emit_i64(s, b->inv_inertia);
     }
 }
 
@@ -443,11 +442,14 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                     }
                     if (m & B_MASS) {
                         b.local_center = take_vec(r, "body.local_center");
+                        at = r->pos;
                         b.mass = take_i64(r, "body.mass");
+                        if (b.mass <= 0) invalid(r, at, "body.mass (a dynamic body's mass is positive)");
+                        at = r->pos;
                         b.inertia = take_i64(r, "body.inertia");
-                        b.inv_mass = take_i64(r, "body.inv_mass");
-                        b.inv_inertia = take_i64(r, "body.inv_inertia");
+                        if (b.inertia < 0) invalid(r, at, "body.inertia (negative)");
                     }
+                    pg__body_set_inverse_mass(&b);
                     /* one encoding per state: a present optional field is not its default */
                     if (((m & B_VELOCITY) && b.v.x == 0 && b.v.y == 0) || ((m & B_ANGULAR) && b.w == 0) ||
                         ((m & B_FORCES) && b.force_x == 0 && b.force_y == 0 && b.torque == 0) ||
@@ -715,7 +717,7 @@ static size_t record_length(pg_section section, const uint8_t *p, size_t avail)
         if (m & B_USER) n += 8;
         if (m & B_SLEEP_TIME) n += 4;
         if (m & B_ISLAND) n += 4;
-        if (m & B_MASS) n += 40;
+        if (m & B_MASS) n += 24; /* local centre, mass, inertia */
     } else if (section == PG_SECTION_SHAPES) {
         if (avail < 5) return 0;
         if (p[4] == 0) return 5;
