@@ -167,14 +167,30 @@ int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, co
     return md.mass < INT64_MAX && md.inertia < INT64_MAX;
 }
 
+/* round(2^(63 + e) / d), ties up, exactly as pg__div64_shl(2^(25 + e), d, 38) rounds it.
+ * When 2^e < d < 2^(62 - e) two hardware divisions do it: 2^63 = a d + r, so
+ * 2^(63 + e) / d = a 2^e + (r 2^e) / d with r 2^e < 2^62 and a 2^e < 2^63. Otherwise the
+ * long division. (Restoring a snapshot derives every dynamic body's inverses, and the
+ * long division alone made restoring rain 1 000 three times slower.) */
+int64_t pg__reciprocal_pow2(int e, int64_t d)
+{
+    if (d > ((int64_t)1 << e) && d < ((int64_t)1 << (62 - e))) {
+        uint64_t ud = (uint64_t)d, a = (UINT64_C(1) << 63) / ud, r = (UINT64_C(1) << 63) % ud;
+        uint64_t sr = r << e, q = (a << e) + sr / ud, rem = sr % ud;
+        if (rem >= ud - rem) ++q;
+        return (int64_t)q;
+    }
+    return pg__div64_shl(INT64_C(1) << (25 + e), d, 38);
+}
+
 void pg__body_set_inverse_mass(pg_body *b)
 {
     b->inv_mass = 0;
     b->inv_inertia = 0;
     if (b->type != PG_BODY_DYNAMIC || b->mass <= 0) return;
-    b->inv_mass = pg__div64_shl(INT64_C(1) << 32, b->mass, 38); /* 2^70 / mass */
+    b->inv_mass = pg__reciprocal_pow2(7, b->mass); /* 2^70 / mass: Q32.32 -> Q25.38 */
     if (b->inertia > 0 && (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0)
-        b->inv_inertia = pg__div64_shl(INT64_C(1) << 36, b->inertia, 38); /* 2^74 / inertia */
+        b->inv_inertia = pg__reciprocal_pow2(11, b->inertia); /* 2^74 / inertia: Q28.36 -> Q25.38 */
 }
 
 void pg__body_update_mass(pg_world *world, uint32_t body_index)

@@ -133,6 +133,8 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index);
 /* inv_mass and inv_inertia from mass, inertia, type and fixed rotation: the one rule, for
  * pg__body_update_mass and for restoring a snapshot (which stores only mass and inertia) */
 void pg__body_set_inverse_mass(pg_body *b);
+/* round(2^(63 + e) / d) for d > 0, 0 <= e <= 31, as pg__div64_shl(2^(25 + e), d, 38) gives it */
+int64_t pg__reciprocal_pow2(int e, int64_t d);
 int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, const pg_geom *extra, pg_fix extra_density);
 void pg__body_sync_geometry(pg_world *world, uint32_t body_index); /* world geoms + boxes */
 void pg__wake_body(pg_world *world, uint32_t body_index);         /* and its island */

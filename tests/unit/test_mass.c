@@ -28,6 +28,8 @@
 #include <stdlib.h>
 
 #include "mass.h"
+#include "wide.h"
+#include "world_internal.h"
 
 typedef long double ld;
 
@@ -940,6 +942,37 @@ static void test_zero_mass_centres(void **state)
     PG_EXPECT_EQ(md.center.y, fx(12.0), "%s", "massless box");
 }
 
+/* Inverse mass and inertia: the two-division path agrees with the long division
+ * (pg__div64_shl) everywhere, including the edges of its range and the fallback. */
+static void test_reciprocal_matches_long_division(void **state)
+{
+    uint64_t x = UINT64_C(88172645463325252);
+    int e, k, j;
+    long i;
+    (void)state;
+    for (e = 7; e <= 11; e += 4) {
+        for (i = 0; i < 200000; ++i) {
+            int64_t d;
+            int bits;
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            bits = 1 + (int)(x % 63u);
+            d = (int64_t)(x >> (64 - bits));
+            if (d <= 0) continue;
+            if (pg__reciprocal_pow2(e, d) != pg__div64_shl(INT64_C(1) << (25 + e), d, 38))
+                fail_msg("e %d, d %lld: the two-division reciprocal differs from the long division", e, (long long)d);
+        }
+        for (k = 0; k < 63; ++k)
+            for (j = -3; j <= 3; ++j) {
+                int64_t d = ((int64_t)1 << k) + j;
+                if (d <= 0) continue;
+                if (pg__reciprocal_pow2(e, d) != pg__div64_shl(INT64_C(1) << (25 + e), d, 38))
+                    fail_msg("e %d, d %lld (near 2^%d): the two-division reciprocal differs", e, (long long)d, k);
+            }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -962,6 +995,7 @@ int main(void)
         cmocka_unit_test(test_random_overlaps),
         cmocka_unit_test(test_overlap_through_vertices),
         cmocka_unit_test(test_zero_mass_centres),
+        cmocka_unit_test(test_reciprocal_matches_long_division),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -11,6 +11,8 @@
  *                         then with each PG_EFFECT_* off in turn, and a settled scene
  *                         (steps 600..1200) with sleeping on and off.
  *   pogon-bench memory    bytes pg_world_memory_size asks for, per scene.
+ *   pogon-bench snapshot  snapshot size of the settled pyramid and stack and of rain 1000
+ *                         after 300 steps, and the median time of a save and a restore.
  *   pogon-bench compare   pogon next to Box2D 2.4.1 (the pogon-bench-box2d harness, run
  *                         as a subprocess when it was built next to this program) for
  *                         pyramid and rain 1000, with sleeping on and with it off.
@@ -41,6 +43,7 @@
 #include <unistd.h>
 
 #include "pogon/pogon.h"
+#include "pogon/replay.h"
 #include "scenes.h"
 
 #define DEFAULT_REPEAT 3u
@@ -401,6 +404,92 @@ static int mode_memory(const options *o)
     return 0;
 }
 
+/* ---- snapshot: size and save/restore time -------------------------------------------- */
+/* The settled pyramid (asleep), the 20-box stack (asleep) and rain 1 000 after its 300
+ * steps (awake, falling onto the pile): snapshot bytes per body, per shape and per contact
+ * (from the section lengths the size implies: the encoding is canonical, so the same state
+ * always takes the same bytes), and the median time of 101 saves and of 101 restores. */
+static int cmp_double_snap(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y ? 1 : 0;
+}
+
+static int mode_snapshot(const options *o)
+{
+    static const struct { const char *scene; uint32_t count, steps; } list[] = {
+        {"pyramid", 20u, 1200u}, {"stack", 20u, 1200u}, {"rain", 1000u, 300u},
+    };
+    enum { RUNS = 101 };
+    size_t i;
+    if (!o->json) {
+        printf("| scene | steps | awake | bodies | shapes | contacts | snapshot bytes | bytes per body | save us | restore us | restore ns per body |\n");
+        printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    }
+    for (i = 0; i < sizeof list / sizeof list[0]; ++i) {
+        pg_world_def def = pg_scene_world_def(list[i].scene, list[i].count);
+        size_t size = pg_scene_memory_size(list[i].scene, list[i].count, &def), snap_size, written = 0;
+        void *memory = malloc(size);
+        unsigned char *buf;
+        pg_scene sc;
+        pg_world_stats st;
+        double save_t[RUNS], restore_t[RUNS];
+        uint32_t k, steps = 0;
+        int r;
+        if (memory == NULL || pg_scene_build(list[i].scene, list[i].count, &def, memory, size, &sc) != PG_OK) {
+            fprintf(stderr, "pogon-bench: building %s failed\n", list[i].scene);
+            free(memory);
+            return 1;
+        }
+        /* the standing scenes until they sleep (or the step budget), rain for its run */
+        for (steps = 0; steps < list[i].steps; ++steps) {
+            if (strcmp(list[i].scene, "rain") != 0 && pg_world_get_stats(sc.world).awake_body_count == 0) break;
+            if (pg_world_step(sc.world) != PG_OK) break;
+        }
+        st = pg_world_get_stats(sc.world);
+        snap_size = pg_world_snapshot_size(sc.world);
+        buf = (unsigned char *)malloc(snap_size > 0 ? snap_size : 1u);
+        if (buf == NULL) {
+            free(memory);
+            return 1;
+        }
+        for (r = 0; r < RUNS; ++r) {
+            double t0 = now_ms(), t1;
+            if (pg_world_snapshot_save(sc.world, buf, snap_size, &written) != PG_OK) break;
+            t1 = now_ms();
+            save_t[r] = (t1 - t0) * 1000.0;
+            t0 = now_ms();
+            if (pg_world_snapshot_restore(sc.world, buf, written) != PG_OK) {
+                fprintf(stderr, "pogon-bench: %s: restore failed: %s\n", list[i].scene, pg_world_last_error(sc.world));
+                free(buf);
+                free(memory);
+                return 1;
+            }
+            t1 = now_ms();
+            restore_t[r] = (t1 - t0) * 1000.0;
+        }
+        qsort(save_t, RUNS, sizeof save_t[0], cmp_double_snap);
+        qsort(restore_t, RUNS, sizeof restore_t[0], cmp_double_snap);
+        k = RUNS / 2;
+        if (o->json)
+            printf("{\"engine\":\"pogon\",\"mode\":\"snapshot\",\"scene\":\"%s\",\"count\":%u,\"steps\":%u,\"awake\":%u,"
+                   "\"bodies\":%u,\"shapes\":%u,\"contacts\":%u,\"snapshot_bytes\":%zu,\"save_us\":%.2f,\"restore_us\":%.2f}\n",
+                   list[i].scene, list[i].count, steps, st.awake_body_count, st.body_count, st.shape_count, st.contact_count, written,
+                   save_t[k], restore_t[k]);
+        else
+            printf("| %s %u | %u | %u | %u | %u | %u | %zu | %.1f | %.1f | %.1f | %.0f |\n", list[i].scene, list[i].count, steps,
+                   st.awake_body_count, st.body_count, st.shape_count, st.contact_count, written,
+                   st.body_count ? (double)written / st.body_count : 0.0, save_t[k], restore_t[k],
+                   st.body_count ? restore_t[k] * 1000.0 / st.body_count : 0.0);
+        free(buf);
+        free(memory);
+    }
+    if (!o->json)
+        printf("\nbytes per body counts the whole snapshot (shapes and contacts included) over the bodies; "
+               "test_snapshot prints the bodies section alone (63 bytes per resting box).\n");
+    return 0;
+}
+
 /* ---- compare: run the Box2D harness as a subprocess ---------------------------------- */
 /* The directory this program lives in, with a trailing '/', or "" when unknown. */
 static void self_dir(const char *argv0, char *out, size_t size)
@@ -523,7 +612,7 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--json] [--no-sleep]\n"
-            "       pogon-bench all | effects [SCENE] | memory | compare   [options]\n"
+            "       pogon-bench all | effects [SCENE] | memory | snapshot | compare   [options]\n"
             "scenes: pyramid (count = rows, default 20), stack (boxes, default 20), rain (circles, default 1000)\n"
             "steps default to 600 (pyramid, stack) and 300 (rain); repeat defaults to 3 (median reported)\n");
 }
@@ -579,6 +668,7 @@ int main(int argc, char **argv)
     if (is_scene(words[0]) && nwords == 1) return mode_scene(words[0], &o);
     if (strcmp(words[0], "all") == 0 && nwords == 1) return mode_all(&o);
     if (strcmp(words[0], "memory") == 0 && nwords == 1) return mode_memory(&o);
+    if (strcmp(words[0], "snapshot") == 0 && nwords == 1) return mode_snapshot(&o);
     if (strcmp(words[0], "compare") == 0 && nwords == 1) return mode_compare(argv[0], &o);
     if (strcmp(words[0], "effects") == 0) {
         if (nwords == 2 && !is_scene(words[1])) {
