@@ -85,18 +85,6 @@ pg_fix_status pg_fix_mul_checked(pg_fix a, pg_fix b, pg_fix *out)
  * behind pg_isqrt64. Both return the same value for every v (the unit test compares
  * them), so the switch changes speed only, never a result. */
 
-/* Number of significant bits of v (0 for v == 0). */
-static int isqrt_bit_length(uint64_t v)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return v == 0 ? 0 : 64 - __builtin_clzll(v);
-#else
-    int n = 0;
-    while (v >= 256u) { n += 8; v >>= 8; }
-    while (v != 0) { ++n; v >>= 1; }
-    return n;
-#endif
-}
 
 /* Digit-by-digit square root, branch-free in its loop (a data-dependent branch
  * mispredicts half the time), starting at the highest bit pair of v. Up to 32
@@ -104,7 +92,7 @@ static int isqrt_bit_length(uint64_t v)
 static inline uint32_t isqrt64_digits(uint64_t v)
 {
     uint64_t res = 0, one;
-    int shift = isqrt_bit_length(v) - 1; /* highest set bit; -1 for v == 0 */
+    int shift = pg__bit_length64(v) - 1; /* highest set bit; -1 for v == 0 */
     if (shift < 0) return 0;
     one = (uint64_t)1 << (shift & ~1);   /* the highest power of 4 <= v */
     while (one != 0) {
@@ -172,7 +160,7 @@ static inline uint32_t isqrt64_newton(uint64_t v)
     uint64_t x, lo, hi, r;
     int e;
     if (v == 0) return 0;
-    e = (isqrt_bit_length(v) - 1) & ~1;                       /* v in [2^e, 2^(e+2)) */
+    e = (pg__bit_length64(v) - 1) & ~1;                       /* v in [2^e, 2^(e+2)) */
     x = e >= 16 ? v >> (e - 16) : v << (16 - e);              /* m * 2^16, in [2^16, 2^18) */
     lo = isqrt_nodes[(x >> 10) - 64];
     hi = isqrt_nodes[(x >> 10) - 63];

@@ -17,18 +17,6 @@
 
 static uint64_t pg__umag(int64_t v) { return v < 0 ? (uint64_t)(-(v + 1)) + 1u : (uint64_t)v; }
 
-/* Number of significant bits of v (0 for v == 0). */
-static int pg__bit_length(uint64_t v)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return v == 0 ? 0 : 64 - __builtin_clzll(v);
-#else
-    int n = 0;
-    while (v >= 256u) { n += 8; v >>= 8; }
-    while (v != 0) { ++n; v >>= 1; }
-    return n;
-#endif
-}
 
 /* Nearest integer square root of v (no ties exist for integers). */
 static uint64_t pg__sqrt_nearest(uint64_t v)
@@ -55,7 +43,7 @@ pg_dir pg_dir_normalize(int64_t x, int64_t y)
     d.x = 0;
     d.y = 0;
     if (big == 0) return d;
-    k = pg__bit_length(big) - 31; /* big / 2^k in [2^30, 2^31) */
+    k = pg__bit_length64(big) - 31; /* big / 2^k in [2^30, 2^31) */
     if (k > 0) {
         /* floor((a + 2^(k-1)) / 2^k) without overflow: nearest, ties away from zero */
         ax = (ax >> k) + ((ax >> (k - 1)) & 1u);

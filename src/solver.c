@@ -98,18 +98,6 @@ static softness make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
     return s;
 }
 
-/* Number of significant bits of v (0 for 0). The builtin and the loop agree exactly. */
-static int bit_length(uint64_t v)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return v == 0 ? 0 : 64 - __builtin_clzll(v);
-#else
-    int n = 0;
-    while (v >= 256u) { n += 8; v >>= 8; }
-    while (v != 0) { ++n; v >>= 1; }
-    return n;
-#endif
-}
 
 /* One denominator, normalised: K scaled by 2^-shift into [2^30, 2^31), and its
  * reciprocal 2^62 / K31 in (2^31, 2^32], so every ratio num / K costs a multiply. */
@@ -119,7 +107,7 @@ static denominator make_denominator(int64_t K)
 {
     denominator d;
     int64_t K31;
-    d.shift = bit_length((uint64_t)K) - 31;
+    d.shift = pg__bit_length64((uint64_t)K) - 31;
     if (d.shift > 0) K31 = pg__round_shift64(K, d.shift);
     else if (d.shift < 0) K31 = K * ((int64_t)1 << -d.shift);
     else K31 = K;

@@ -1,18 +1,6 @@
 /* vec2.c — the vector and matrix operations too large to inline. */
 #include "pogon/fixed.h"
 
-/* Number of significant bits of v (0 for v == 0). */
-static int bit_length(uint64_t v)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return v == 0 ? 0 : 64 - __builtin_clzll(v);
-#else
-    int n = 0;
-    while (v >= 256u) { n += 8; v >>= 8; }
-    while (v != 0) { ++n; v >>= 1; }
-    return n;
-#endif
-}
 
 pg_fix pg_v2_length(pg_vec2 v)
 {
@@ -31,7 +19,7 @@ pg_vec2 pg_v2_normalize(pg_vec2 v)
     uint64_t big = ax > ay ? ax : ay, len, nx, ny;
     int up;
     if (big == 0) return pg_v2_zero();
-    up = 30 - bit_length(big); /* big <= 2^31, so up >= -2 */
+    up = 30 - pg__bit_length64(big); /* big <= 2^31, so up >= -2 */
     if (up > 0) { ax <<= up; ay <<= up; }
     else if (up < 0) { ax >>= 1; ay >>= 1; } /* magnitudes: symmetric in sign */
     len = pg_isqrt64(ax * ax + ay * ay);

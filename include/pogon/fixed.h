@@ -98,6 +98,20 @@ static inline int64_t pg__round_shift64(int64_t x, int n)
     return (x + half - (int64_t)(x < 0)) >> n;
 }
 
+/* Number of significant bits of v (0 for v == 0), for normalising before a division or a
+ * square root. The builtin and the portable loop agree exactly. */
+static inline int pg__bit_length64(uint64_t v)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return v == 0 ? 0 : 64 - __builtin_clzll(v);
+#else
+    int n = 0;
+    while (v >= 256u) { n += 8; v >>= 8; }
+    while (v != 0) { ++n; v >>= 1; }
+    return n;
+#endif
+}
+
 /* Clamp an int64 to the legal pg_fix range. */
 static inline pg_fix pg__sat64(int64_t x)
 {
