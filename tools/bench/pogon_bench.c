@@ -409,11 +409,6 @@ static int mode_memory(const options *o)
  * steps (awake, falling onto the pile): snapshot bytes per body, per shape and per contact
  * (from the section lengths the size implies: the encoding is canonical, so the same state
  * always takes the same bytes), and the median time of 101 saves and of 101 restores. */
-static int cmp_double_snap(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y ? 1 : 0;
-}
 
 static int mode_snapshot(const options *o)
 {
@@ -468,8 +463,8 @@ static int mode_snapshot(const options *o)
             t1 = now_ms();
             restore_t[r] = (t1 - t0) * 1000.0;
         }
-        qsort(save_t, RUNS, sizeof save_t[0], cmp_double_snap);
-        qsort(restore_t, RUNS, sizeof restore_t[0], cmp_double_snap);
+        qsort(save_t, RUNS, sizeof save_t[0], cmp_double);
+        qsort(restore_t, RUNS, sizeof restore_t[0], cmp_double);
         k = RUNS / 2;
         if (o->json)
             printf("{\"engine\":\"pogon\",\"mode\":\"snapshot\",\"scene\":\"%s\",\"count\":%u,\"steps\":%u,\"awake\":%u,"
