@@ -406,10 +406,9 @@ static int mode_memory(const options *o)
 
 /* ---- snapshot: size and save/restore time -------------------------------------------- */
 /* The settled pyramid (asleep), the 20-box stack (asleep) and rain 1 000 after its 300
- * steps (awake, falling onto the pile): snapshot bytes per body, per shape and per contact
- * (from the section lengths the size implies: the encoding is canonical, so the same state
- * always takes the same bytes), and the median time of 101 saves and of 101 restores. */
-
+ * steps (awake, falling onto the pile): the snapshot's bytes, in all and over the bodies
+ * (shapes and contacts included; test_snapshot splits it by section), and the median
+ * time of 101 saves and of 101 restores. */
 static int mode_snapshot(const options *o)
 {
     static const struct { const char *scene; uint32_t count, steps; } list[] = {
