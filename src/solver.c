@@ -56,6 +56,8 @@ typedef struct constraint_point {
     int32_t gnA, gnB, gtA, gtB;      /* Q8.24 1/m */
     pg_fix friction_ratio;           /* f Kt / Kn */
     pg_fix relative_velocity;        /* normal, at the start of the step */
+    int64_t separation;              /* from the last relax pass: positions have not moved
+                                        since, so the next soft pass reuses it */
     pg_fix normal_impulse, tangent_impulse, max_normal_impulse;
 } constraint_point;
 
@@ -212,6 +214,7 @@ typedef struct step_context {
     softness soft, soft_static;
     pg_fix push_max;
     uint32_t effects;
+    int separation_cached;   /* the soft pass of substeps 1.. reuses the relax pass's separations */
 } step_context;
 
 /* ---- the row kernel ------------------------------------------------------------------
@@ -313,11 +316,17 @@ static inline void solve_normal(const step_context *ctx, const softness *soft, c
                                 const solver_body *B, velocity *va, velocity *vb, constraint_point *p, int use_bias, int linear)
 {
     const pg_dir n = c->n;
-    int64_t ax, ay, bx, by, s, acc, rel;
-    /* current separation from where the anchors are now */
-    anchor_now(A, p->rA, c->round_a, &ax, &ay);
-    anchor_now(B, p->rB, c->round_b, &bx, &by);
-    s = pg__round_shift64(n.x * (bx - ax) + n.y * (by - ay), 30) + p->adjusted_separation;
+    int64_t s, acc, rel;
+    if (use_bias && ctx->separation_cached) {
+        s = p->separation; /* the relax pass measured it, and nothing has moved since */
+    } else {
+        /* current separation from where the anchors are now */
+        int64_t ax, ay, bx, by;
+        anchor_now(A, p->rA, c->round_a, &ax, &ay);
+        anchor_now(B, p->rB, c->round_b, &bx, &by);
+        s = pg__round_shift64(n.x * (bx - ax) + n.y * (by - ay), 30) + p->adjusted_separation;
+        if (!use_bias) p->separation = s;
+    }
     rel = linear ? linear_speed(va, vb, n) : relative_speed(va, vb, n, p->cnA, p->cnB);
     if (s > 0) {
         /* speculative: close the gap in one substep, no more */
@@ -422,6 +431,7 @@ void pg__solve(pg_world *w)
     ctx.soft_static = make_soft(pg_fix_add(hertz, hertz), w->def.contact_damping_ratio, ctx.n);
     ctx.push_max = w->def.contact_push_max;
     ctx.effects = effects;
+    ctx.separation_cached = 0;
 
     /* the dummy static body */
     {
@@ -567,6 +577,7 @@ void pg__solve(pg_world *w)
             }
         }
         for (i = 0; i < n_cons; ++i) warm_start(&cons[i], bodies);
+        ctx.separation_cached = sub > 0;
         for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, &cons[i], bodies, 1, order);
         /* integrate positions */
         for (i = 0; i < n_active; ++i) {
