@@ -12,6 +12,7 @@
  *   mirrored results.
  */
 #include "geom.h"
+#include "intmath.h"
 
 /* ---- small helpers ---------------------------------------------------------------- */
 

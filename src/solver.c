@@ -25,6 +25,7 @@
  * column gets no sideways push from the solver's order.
  */
 #include "wide.h"
+#include "intmath.h"
 #include "world_internal.h"
 
 /* gcc does not always inline the friction row into its two call sites; measured with

@@ -1,5 +1,6 @@
 /* vec2.c — the vector and matrix operations too large to inline. */
 #include "pogon/fixed.h"
+#include "intmath.h"
 
 
 pg_fix pg_v2_length(pg_vec2 v)

@@ -98,20 +98,6 @@ static inline int64_t pg__round_shift64(int64_t x, int n)
     return (x + half - (int64_t)(x < 0)) >> n;
 }
 
-/* Number of significant bits of v (0 for v == 0), for normalising before a division or a
- * square root. The builtin and the portable loop agree exactly. */
-static inline int pg__bit_length64(uint64_t v)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return v == 0 ? 0 : 64 - __builtin_clzll(v);
-#else
-    int n = 0;
-    while (v >= 256u) { n += 8; v >>= 8; }
-    while (v != 0) { ++n; v >>= 1; }
-    return n;
-#endif
-}
-
 /* Clamp an int64 to the legal pg_fix range. */
 static inline pg_fix pg__sat64(int64_t x)
 {
@@ -175,14 +161,6 @@ pg_fix pg_fix_recip(pg_fix a);
 /* Integer square root of a 64-bit value, floor. Used for lengths of int64 sums. How it
  * is computed depends on PG_FAST_DIV64 (config.h); what it returns does not. */
 uint32_t pg_isqrt64(uint64_t v);
-/* Internal, not part of the API: the digit-by-digit implementation behind pg_isqrt64
- * when PG_FAST_DIV64 is 0, exported whatever the setting so that the unit test checks
- * it against the other one. */
-uint32_t pg__isqrt64_digits(uint64_t v);
-/* Internal, for the unit test: the seed table of the Newton implementation (entry i is
- * round(sqrt(64 + i) 2^27)), or NULL and *count = 0 when PG_FAST_DIV64 is 0. Its values
- * decide only how fast pg_isqrt64 is, never what it returns; the test checks them. */
-const uint32_t *pg__isqrt64_seed_nodes(uint32_t *count);
 
 /* ---- angles and trigonometry ------------------------------------------------ */
 

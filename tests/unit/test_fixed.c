@@ -5,6 +5,7 @@
  * integer reasoning written out in the test); doubles are not used for exact results.
  */
 #include "pg_test.h"
+#include "intmath.h" /* the square roots' internals */
 
 #include <limits.h>
 
