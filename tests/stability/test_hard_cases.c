@@ -18,6 +18,7 @@
 #include <time.h>
 
 #include "pogon/pogon.h"
+#include "../unit/pg_test_world.h"
 #include "pogon/replay.h"
 #include "scenes.h"
 
@@ -39,16 +40,9 @@
 #define Q36 68719476736.0
 #define LSB (1.0 / 65536.0)
 
-PG_HARD_HELPER pg_fix fx(double v) { return (pg_fix)llround(v * 65536.0); }
-PG_HARD_HELPER double fd(pg_fix v) { return (double)v / 65536.0; }
 PG_HARD_HELPER double angle_deg(pg_angle a) { return (double)(int32_t)a * (360.0 / 4294967296.0); }
 PG_HARD_HELPER pg_angle angle_from_deg(double d) { return (pg_angle)(uint32_t)(int64_t)llround(d / 360.0 * 4294967296.0); }
 PG_HARD_HELPER double seconds_since(clock_t t0) { return (double)(clock() - t0) / (double)CLOCKS_PER_SEC; }
-
-typedef struct test_world {
-    void *memory;
-    pg_world *w;
-} test_world;
 
 PG_HARD_HELPER pg_world_def def_with(uint32_t effects, uint32_t bodies, uint32_t shapes, uint32_t contacts)
 {
@@ -60,35 +54,14 @@ PG_HARD_HELPER pg_world_def def_with(uint32_t effects, uint32_t bodies, uint32_t
     return d;
 }
 
-PG_HARD_HELPER test_world make_world_def(const pg_world_def *d)
-{
-    test_world t;
-    size_t need = pg_world_memory_size(d);
-    assert_true(need > 0);
-    t.memory = malloc(need);
-    assert_non_null(t.memory);
-    assert_int_equal(pg_world_create(d, t.memory, need, &t.w), PG_OK);
-    return t;
-}
-
 PG_HARD_HELPER test_world make_world(uint32_t effects)
 {
     pg_world_def d = def_with(effects, 64, 128, 512);
     return make_world_def(&d);
 }
 
-PG_HARD_HELPER void free_world(test_world *t) { free(t->memory); t->memory = NULL; t->w = NULL; }
-
 PG_HARD_HELPER void step_once(pg_world *w) { assert_int_equal(pg_world_step(w), PG_OK); }
 PG_HARD_HELPER void step_n(pg_world *w, int n) { int i; for (i = 0; i < n; ++i) step_once(w); }
-
-PG_HARD_HELPER pg_body_def dynamic_at(double x, double y)
-{
-    pg_body_def bd = pg_default_body_def();
-    bd.type = PG_BODY_DYNAMIC;
-    bd.position = pg_v2(fx(x), fx(y));
-    return bd;
-}
 
 /* A static box `width` x `height` whose top edge is at y = top, centred on x = cx. */
 PG_HARD_HELPER pg_body_id make_ground_at(pg_world *w, double cx, double top, double width, double height)

@@ -11,31 +11,13 @@
 #include <stdlib.h>
 
 #include "pogon/pogon.h"
+#include "pg_test_world.h"
 
 #define Q32 4294967296.0
 #define Q36 68719476736.0
 
-static pg_fix fx(double v) { return (pg_fix)llround(v * 65536.0); }
-static double fd(pg_fix v) { return (double)v / 65536.0; }
 
 /* ---- a world in malloc'd memory -------------------------------------------------------- */
-typedef struct test_world {
-    void *memory;
-    pg_world *w;
-} test_world;
-
-static test_world make_world_def(const pg_world_def *d)
-{
-    test_world t;
-    size_t need = pg_world_memory_size(d);
-    assert_true(need > 0);
-    t.memory = malloc(need); /* malloc's alignment is at least 8 */
-    assert_non_null(t.memory);
-    assert_int_equal(pg_world_create(d, t.memory, need, &t.w), PG_OK);
-    assert_non_null(t.w);
-    return t;
-}
-
 static test_world make_world(uint32_t bodies, uint32_t shapes, uint32_t contacts)
 {
     pg_world_def d = pg_default_world_def();
@@ -43,16 +25,6 @@ static test_world make_world(uint32_t bodies, uint32_t shapes, uint32_t contacts
     d.max_shapes = shapes;
     d.max_contacts = contacts;
     return make_world_def(&d);
-}
-
-static void free_world(test_world *t) { free(t->memory); t->memory = NULL; t->w = NULL; }
-
-static pg_body_def dynamic_at(double x, double y)
-{
-    pg_body_def bd = pg_default_body_def();
-    bd.type = PG_BODY_DYNAMIC;
-    bd.position = pg_v2(fx(x), fx(y));
-    return bd;
 }
 
 static uint32_t body_count(const pg_world *w) { return pg_world_get_stats(w).body_count; }

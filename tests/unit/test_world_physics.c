@@ -14,20 +14,14 @@
 #include <stdlib.h>
 
 #include "pogon/pogon.h"
+#include "pg_test_world.h"
 
 #define Q32 4294967296.0
 #define Q36 68719476736.0
 
-static pg_fix fx(double v) { return (pg_fix)llround(v * 65536.0); }
-static double fd(pg_fix v) { return (double)v / 65536.0; }
 /* A binary angle as signed degrees. */
 static double angle_deg(pg_angle a) { return (double)(int32_t)a * (360.0 / 4294967296.0); }
 static pg_angle angle_from_deg(double d) { return (pg_angle)(uint32_t)(int64_t)llround(d / 360.0 * 4294967296.0); }
-
-typedef struct test_world {
-    void *memory;
-    pg_world *w;
-} test_world;
 
 static pg_world_def base_def(uint32_t effects)
 {
@@ -39,37 +33,16 @@ static pg_world_def base_def(uint32_t effects)
     return d;
 }
 
-static test_world make_world_def(const pg_world_def *d)
-{
-    test_world t;
-    size_t need = pg_world_memory_size(d);
-    assert_true(need > 0);
-    t.memory = malloc(need);
-    assert_non_null(t.memory);
-    assert_int_equal(pg_world_create(d, t.memory, need, &t.w), PG_OK);
-    return t;
-}
-
 static test_world make_world(uint32_t effects)
 {
     pg_world_def d = base_def(effects);
     return make_world_def(&d);
 }
 
-static void free_world(test_world *t) { free(t->memory); t->memory = NULL; t->w = NULL; }
-
 static void step_n(pg_world *w, int n)
 {
     int i;
     for (i = 0; i < n; ++i) assert_int_equal(pg_world_step(w), PG_OK);
-}
-
-static pg_body_def dynamic_at(double x, double y)
-{
-    pg_body_def bd = pg_default_body_def();
-    bd.type = PG_BODY_DYNAMIC;
-    bd.position = pg_v2(fx(x), fx(y));
-    return bd;
 }
 
 /* A static ground 40 m wide whose top is at y = 0. */
