@@ -256,6 +256,24 @@ static inline void store_velocity(solver_body *b, const velocity *v)
     b->w = clamp_velocity(v->w);
 }
 
+/* The linear part of a row: what apply_row does when gA = gB = 0. */
+static inline void apply_linear(velocity *A, velocity *B, int64_t lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y)
+{
+    A->x -= pg__round_shift64(lambda * lA_x, 30);
+    A->y -= pg__round_shift64(lambda * lA_y, 30);
+    B->x += pg__round_shift64(lambda * lB_x, 30);
+    B->y += pg__round_shift64(lambda * lB_y, 30);
+}
+
+/* The linear part of relative_speed: all of it when cA = cB = 0. */
+static inline int64_t linear_speed(const velocity *A, const velocity *B, pg_dir d)
+{
+    return pg__round_shift64(d.x * (B->x - A->x) + d.y * (B->y - A->y), 30);
+}
+
+/* A whole row. It does not call apply_linear: written body by body (A's x, y, w, then
+ * B's), gcc schedules the substep loop better; the split form measured 3.8 % more
+ * instructions on the awake pyramid (callgrind). */
 static inline void apply_row(velocity *A, velocity *B, int64_t lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y, int32_t gA, int32_t gB)
 {
     A->x -= pg__round_shift64(lambda * lA_x, 30);
@@ -266,25 +284,10 @@ static inline void apply_row(velocity *A, velocity *B, int64_t lambda, int32_t l
     B->w += pg__round_shift64(lambda * gB, 24);
 }
 
-/* apply_row without the angular terms (gA = gB = 0). */
-static inline void apply_linear(velocity *A, velocity *B, int64_t lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y)
-{
-    A->x -= pg__round_shift64(lambda * lA_x, 30);
-    A->y -= pg__round_shift64(lambda * lA_y, 30);
-    B->x += pg__round_shift64(lambda * lB_x, 30);
-    B->y += pg__round_shift64(lambda * lB_y, 30);
-}
-
-/* relative_speed without the angular terms (cA = cB = 0). */
-static inline int64_t linear_speed(const velocity *A, const velocity *B, pg_dir d)
-{
-    return pg__round_shift64(d.x * (B->x - A->x) + d.y * (B->y - A->y), 30);
-}
-
 /* Relative velocity of B's anchor against A's along direction d (cA, cB: r x d). */
 static inline int64_t relative_speed(const velocity *A, const velocity *B, pg_dir d, pg_fix cA, pg_fix cB)
 {
-    return pg__round_shift64(d.x * (B->x - A->x) + d.y * (B->y - A->y), 30) + pg__round_shift64(B->w * cB - A->w * cA, 16);
+    return linear_speed(A, B, d) + pg__round_shift64(B->w * cB - A->w * cA, 16);
 }
 
 /* Where anchor r of a body is now, relative to the body's centre at the step's start:
