@@ -35,6 +35,17 @@
 #else
 #define PG__INLINE_ROW static inline
 #endif
+/* clang (and so emcc) leaves the normal row and the per-pass constraint functions out of
+ * line, where use_bias and the cached separation are tested at run time and the two
+ * velocities live in memory (in wasm, on the shadow stack). Inlined into pg__solve's
+ * loops, each pass gets its own specialised copy: 7 % fewer instructions with clang
+ * (callgrind, awake pyramid) and 6 % less time in node. gcc inlines them by itself, and
+ * forcing it there costs 0.8 %. */
+#if defined(__clang__)
+#define PG__INLINE_PASS PG__INLINE_ROW
+#else
+#define PG__INLINE_PASS static inline
+#endif
 
 typedef struct solver_body {
     pg_vec2 v;
@@ -251,6 +262,15 @@ static inline pg_fix clamp_velocity(int64_t v)
 
 static inline void store_velocity(solver_body *b, const velocity *v)
 {
+    /* v + VELOCITY_MAX is in [0, 2^30) for all three exactly when their OR is: one test
+     * on the common path instead of three */
+    uint64_t bits = (uint64_t)(v->x + VELOCITY_MAX) | (uint64_t)(v->y + VELOCITY_MAX) | (uint64_t)(v->w + VELOCITY_MAX);
+    if (bits < (uint64_t)(2 * VELOCITY_MAX)) {
+        b->v.x = (pg_fix)v->x;
+        b->v.y = (pg_fix)v->y;
+        b->w = (pg_fix)v->w;
+        return;
+    }
     b->v.x = clamp_velocity(v->x);
     b->v.y = clamp_velocity(v->y);
     b->w = clamp_velocity(v->w);
@@ -311,12 +331,13 @@ PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point 
     int64_t max_f = pg__round_shift64((int64_t)p->friction_ratio * p->normal_impulse, 16), acc;
     if (max_f > LAMBDA_MAX) max_f = LAMBDA_MAX;
     acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(va, vb, t, p->ctA, p->ctB), -max_f, max_f);
+    if (acc == p->tangent_impulse) return; /* 40 % of the pyramid's rows: unloaded contacts */
     apply_row(va, vb, acc - p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
     p->tangent_impulse = (pg_fix)acc;
 }
 
 /* One normal row, soft (use_bias) or rigid (relax), speculative where the gap is open. */
-static inline void solve_normal(const step_context *ctx, const softness *soft, const constraint *c, const solver_body *A,
+PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft, const constraint *c, const solver_body *A,
                                 const solver_body *B, velocity *va, velocity *vb, constraint_point *p, int use_bias, int linear)
 {
     const pg_dir n = c->n;
@@ -344,13 +365,14 @@ static inline void solve_normal(const step_context *ctx, const softness *soft, c
         acc = (int64_t)p->normal_impulse - rel;
     }
     acc = clamp_lambda(acc, 0, LAMBDA_MAX);
+    if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
+    if (acc == p->normal_impulse) return; /* a quarter of the pyramid's rows: open gaps */
     if (linear) apply_linear(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
     else apply_row(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
     p->normal_impulse = (pg_fix)acc;
-    if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
 }
 
-static void solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
+PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     velocity va = load_velocity(A), vb = load_velocity(B);
@@ -379,7 +401,7 @@ static void solve_constraint(const step_context *ctx, constraint *c, solver_body
     store_velocity(B, &vb);
 }
 
-static void warm_start(constraint *c, solver_body *bodies)
+PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     velocity va = load_velocity(A), vb = load_velocity(B);
