@@ -243,7 +243,7 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
     }
     for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
         pg_aabb box;
-        pg_geom_transform(&world->shapes[s].local, b->origin, b->rot, &world->world_geoms[s]);
+        pg__geom_place_slot(&world->shapes[s].local, b->origin, b->rot, &world->world_geoms[s]);
         box = pg_geom_aabb(&world->world_geoms[s]);
         /* saturating: a body that has flown out of the envelope reaches the edge of the
          * Q16.16 range, where a plain add would overflow */

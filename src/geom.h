@@ -30,6 +30,10 @@ pg_dir pg_dir_normalize(int64_t x, int64_t y);
 
 /* Place a local geometry with a body's transform: world = position + R local. */
 void pg_geom_transform(const pg_geom *local, pg_vec2 position, pg_rot rotation, pg_geom *world);
+/* The same into a world's per-shape slot, which is always initialised (zero at world
+ * creation, then placed): entries beyond the count are cleared only where the slot
+ * held more vertices before. */
+void pg__geom_place_slot(const pg_geom *local, pg_vec2 position, pg_rot rotation, pg_geom *slot);
 
 /* The bounding box of a placed geometry, radius included. */
 pg_aabb pg_geom_aabb(const pg_geom *g);

@@ -53,7 +53,9 @@ typedef struct solver_body {
     pg_vec2 c0, c;        /* centre at the start of the step, and now */
     pg_vec2 dp;           /* c - c0: |.| <= substeps * VELOCITY_MAX h < 2^24, fits */
     pg_angle a0, a;
-    pg_rot dq;            /* rotation from a0 to a */
+    pg_rot dq;            /* rotation from a0 to a; kept only when turns_anchors */
+    int32_t turns_anchors;/* some contact anchor on this body turns with it (not a centred
+                             circle): only then is dq needed */
     pg_vec2 accel;        /* from gravity and force, m/s^2 */
     pg_fix alpha;         /* from torque, rad/s^2 */
     int32_t lin_damp, ang_damp; /* Q2.30 factor per substep; PG_ROT_ONE: none */
@@ -467,6 +469,7 @@ void pg__solve(pg_world *w)
         d->c0 = d->c = d->dp = pg_v2_zero();
         d->a0 = d->a = 0;
         d->dq = pg_rot_identity();
+        d->turns_anchors = 0;
     }
 
     /* bodies */
@@ -482,6 +485,7 @@ void pg__solve(pg_world *w)
         sb->dp = pg_v2_zero();
         sb->a0 = sb->a = b->angle;
         sb->dq = pg_rot_identity();
+        sb->turns_anchors = 0;
         sb->accel = pg_v2_zero();
         sb->alpha = 0;
         sb->lin_damp = PG_ROT_ONE;
@@ -537,6 +541,8 @@ void pg__solve(pg_world *w)
         c->soft_static = A->inv_mass == 0 || B->inv_mass == 0 || A->inv_mass / 4 >= B->inv_mass || B->inv_mass / 4 >= A->inv_mass;
         c->round_a = centred_circle(w, ct->shape_a, ct->body_a);
         c->round_b = centred_circle(w, ct->shape_b, ct->body_b);
+        if (!c->round_a) bodies[c->a].turns_anchors = 1;
+        if (!c->round_b) bodies[c->b].turns_anchors = 1;
         c->normal_linear = 1;
         c->restitution = (effects & PG_EFFECT_RESTITUTION) != 0 ? ct->restitution : 0;
         t.x = c->n.y;
@@ -613,7 +619,7 @@ void pg__solve(pg_world *w)
             sb->dp = pg_v2((pg_fix)((int64_t)sb->c.x - sb->c0.x), (pg_fix)((int64_t)sb->c.y - sb->c0.y));
             if (rotation && sb->w != 0) {
                 sb->a += (pg_angle)(uint64_t)pg__round_shift64((int64_t)sb->w * ctx.angle_per_w, 24);
-                sb->dq = pg_rot_from_angle(sb->a - sb->a0);
+                if (sb->turns_anchors) sb->dq = pg_rot_from_angle(sb->a - sb->a0); /* a ball's is never read */
             }
         }
         for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, &cons[i], bodies, 0, order);
