@@ -142,6 +142,11 @@ static layout compute_layout(const pg_world_def *d)
     return l;
 }
 
+const char *pg_world_def_problem(const pg_world_def *def)
+{
+    return def == NULL ? "the world definition is NULL" : check_def(def);
+}
+
 size_t pg_world_memory_size(const pg_world_def *def)
 {
     if (def == NULL || check_def(def) != NULL) return 0;

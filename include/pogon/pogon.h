@@ -125,6 +125,11 @@ pg_world_def pg_default_world_def(void);
 /* Bytes of memory a world with these capacities needs (0 if the def is invalid). */
 size_t pg_world_memory_size(const pg_world_def *def);
 
+/* Why a def is invalid, e.g. "substeps must be 1..16"; NULL when it is valid. This is
+ * the check pg_world_memory_size and pg_world_create make (they return 0 and
+ * PG_ERR_INVALID_ARGUMENT, and have no world to keep the message in). */
+const char *pg_world_def_problem(const pg_world_def *def);
+
 /* Create a world inside `memory` (at least pg_world_memory_size bytes, aligned to 8).
  * The world lives in that block; it never allocates. There is no destroy: release
  * the block when done. */

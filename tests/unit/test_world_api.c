@@ -76,6 +76,20 @@ static void test_memory_size_of_invalid_defs(void **state)
     d = d0; d.effects = 0; assert_true(pg_world_memory_size(&d) > 0);
 }
 
+/* pg_world_def_problem names the field at fault, and only for invalid defs. */
+static void test_def_problem_names_the_field(void **state)
+{
+    pg_world_def d0 = pg_default_world_def(), d;
+    (void)state;
+    assert_null(pg_world_def_problem(&d0));
+    assert_non_null(pg_world_def_problem(NULL));
+    d = d0; d.substeps = 17; assert_string_equal(pg_world_def_problem(&d), "substeps must be 1..16");
+    d = d0; d.step_hz = 0; assert_string_equal(pg_world_def_problem(&d), "step_hz must be 1..1000");
+    d = d0; d.contact_hertz = 0; assert_string_equal(pg_world_def_problem(&d), "contact_hertz must be in (0, 1000]");
+    d = d0; d.max_contacts = 0; assert_string_equal(pg_world_def_problem(&d), "max_contacts must be 1..2^24");
+    d = d0; d.substeps = 16; assert_null(pg_world_def_problem(&d));
+}
+
 static void test_world_create_errors(void **state)
 {
     pg_world_def d = pg_default_world_def(), bad;
@@ -1044,6 +1058,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_result_names_and_messages),
         cmocka_unit_test(test_memory_size_of_invalid_defs),
+        cmocka_unit_test(test_def_problem_names_the_field),
         cmocka_unit_test(test_world_create_errors),
         cmocka_unit_test(test_null_pointers),
         cmocka_unit_test(test_capacity_bodies),

@@ -21,6 +21,10 @@
  *                         wasm build under node: V8 compiles wasm in tiers while it runs,
  *                         so the first runs of a short scene measure the compiler, not the
  *                         code (tools/bench/peers gives node's engines 2).
+ *   --substeps N, --contact-hertz HZ, --damping-ratio Z
+ *                         world settings instead of the defaults (4, 30, 10; decimals are
+ *                         read exactly as Q16.16), to see what a setting costs and whether
+ *                         the scene still stands; pg_world_create's checks apply.
  *
  * Method: a run builds the scene (the shared tools/scenes code, memory from malloc),
  * takes `warmup` untimed steps (0 unless stated), then times `steps` steps with
@@ -29,7 +33,9 @@
  * default to 600 (pyramid, stack) and 300 (rain).
  *
  * For the scenes that should stand (pyramid, stack) the top box's displacement from
- * where it started is reported: distance, dx, dy and its angle in degrees. The world is
+ * where it started is reported: distance, dx, dy and its angle in degrees, and, with
+ * sleeping on, the step after which every body was asleep ("asleep_step", 0: not within
+ * the run), found by one more untimed run that reads the stats after every step. The world is
  * built and stepped in integers only; double is used for timing and for printing.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -58,6 +64,12 @@ typedef struct options {
     int no_sleep;     /* --no-sleep: PG_EFFECT_SLEEPING off */
 } options;
 
+/* World settings from the command line; 0: the scene's default. */
+typedef struct settings {
+    uint32_t substeps;
+    pg_fix contact_hertz, damping_ratio;
+} settings;
+
 typedef struct result {
     const char *scene;
     const char *label;      /* effects mode: the row's name */
@@ -66,6 +78,7 @@ typedef struct result {
     int stands;             /* pyramid and stack: top displacement is meaningful */
     double top_disp, dx, dy, angle_deg;
     uint32_t awake_end, contacts_end, touching_end, capacity_misses, speed_clamps;
+    uint32_t asleep_step;   /* stands, sleeping on: first step after which nothing was awake */
     size_t memory_bytes;
 } result;
 
@@ -122,6 +135,25 @@ static int parse_u32(const char *text, uint32_t *out)
 
 /* ---- one measurement ------------------------------------------------------------------ */
 static uint32_t g_warmup_runs; /* --warmup-runs: whole runs before the timed ones */
+static settings g_settings;    /* --substeps, --contact-hertz, --damping-ratio */
+
+/* The step (1-based) after which no body was awake, 0 if none within `steps`: an extra
+ * run, because reading the stats every step would disturb the timing. */
+static uint32_t find_asleep_step(const char *scene, uint32_t count, uint32_t steps, const pg_world_def *def, size_t size)
+{
+    pg_scene sc;
+    uint32_t i, found = 0;
+    void *memory = malloc(size);
+    if (memory == NULL) return 0;
+    if (pg_scene_build(scene, count, def, memory, size, &sc) == PG_OK) {
+        for (i = 1; i <= steps && found == 0; ++i) {
+            if (pg_world_step(sc.world) != PG_OK) break;
+            if (pg_world_get_stats(sc.world).awake_body_count == 0) found = i;
+        }
+    }
+    free(memory);
+    return found;
+}
 
 /* Build `scene` `repeat` times with `effects`, step `warmup` untimed then `steps` timed.
  * Returns 0 on success; prints the failure otherwise. */
@@ -147,10 +179,14 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
     res->stands = scene_stands(scene);
     def = pg_scene_world_def(scene, count);
     def.effects = effects;
+    if (g_settings.substeps != 0) def.substeps = g_settings.substeps;
+    if (g_settings.contact_hertz != 0) def.contact_hertz = g_settings.contact_hertz;
+    if (g_settings.damping_ratio != 0) def.contact_damping_ratio = g_settings.damping_ratio;
     size = pg_scene_memory_size(scene, count, &def);
     res->memory_bytes = size;
     if (size == 0) {
-        fprintf(stderr, "pogon-bench: %s %u: pg_world_memory_size refused the world definition\n", scene, count);
+        const char *why = pg_world_def_problem(&def);
+        fprintf(stderr, "pogon-bench: %s %u: invalid world settings: %s\n", scene, count, why != NULL ? why : "too large");
         return 1;
     }
     for (r = 0; r < g_warmup_runs + repeat; ++r) {
@@ -205,6 +241,7 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
         res->speed_clamps = st.speed_clamps;
         free(memory);
     }
+    if (res->stands && (effects & PG_EFFECT_SLEEPING) != 0) res->asleep_step = find_asleep_step(scene, count, steps, &def, size);
     qsort(runs, repeat, sizeof runs[0], cmp_double);
     res->ms_min = runs[0];
     res->ms_max = runs[repeat - 1];
@@ -219,12 +256,22 @@ static void print_json(const result *r)
     printf("{\"engine\":\"pogon\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":%u,\"warmup_runs\":%u,\"repeat\":%u,"
            "\"effects\":%u,\"trig_table_bits\":%d,",
            r->scene, r->count, r->bodies, r->steps, r->warmup, g_warmup_runs, r->repeat, r->effects, PG_TRIG_TABLE_BITS);
+    {
+        pg_world_def d = pg_scene_world_def(r->scene, r->count);
+        char hz[24], zeta[24];
+        if (g_settings.substeps != 0) d.substeps = g_settings.substeps;
+        if (g_settings.contact_hertz != 0) d.contact_hertz = g_settings.contact_hertz;
+        if (g_settings.damping_ratio != 0) d.contact_damping_ratio = g_settings.damping_ratio;
+        pg_fix_format(d.contact_hertz, hz, sizeof hz);
+        pg_fix_format(d.contact_damping_ratio, zeta, sizeof zeta);
+        printf("\"substeps\":%u,\"contact_hertz\":%s,\"damping_ratio\":%s,", d.substeps, hz, zeta);
+    }
     if (r->label != NULL) printf("\"variant\":\"%s\",", r->label);
     printf("\"ms_per_step\":%.6f,\"ms_min\":%.6f,\"ms_max\":%.6f,\"steps_per_second\":%.2f,", r->ms_per_step, r->ms_min,
            r->ms_max, r->steps_per_second);
     if (r->stands)
-        printf("\"top_displacement_m\":%.6f,\"dx_m\":%.6f,\"dy_m\":%.6f,\"angle_deg\":%.4f,", r->top_disp, r->dx, r->dy,
-               r->angle_deg);
+        printf("\"top_displacement_m\":%.6f,\"dx_m\":%.6f,\"dy_m\":%.6f,\"angle_deg\":%.4f,\"asleep_step\":%u,", r->top_disp,
+               r->dx, r->dy, r->angle_deg, r->asleep_step);
     printf("\"awake_bodies\":%u,\"contacts\":%u,\"touching\":%u,\"capacity_misses\":%u,\"speed_clamps\":%u,"
            "\"memory_bytes\":%zu}\n", r->awake_end, r->contacts_end, r->touching_end, r->capacity_misses, r->speed_clamps,
            r->memory_bytes);
@@ -233,18 +280,20 @@ static void print_json(const result *r)
 
 static void print_table_header(void)
 {
-    printf("| scene | count | bodies | steps | ms/step | steps/s | top disp m | dx m | dy m | angle deg | awake at end | touching | capacity misses |\n");
-    printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    printf("| scene | count | bodies | steps | ms/step | steps/s | top disp m | dx m | dy m | angle deg | asleep after step | awake at end | touching | capacity misses |\n");
+    printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
 }
 
 static void print_table_row(const result *r)
 {
     printf("| %s | %u | %u | %u | %.4f | %.1f | ", r->scene, r->count, r->bodies, r->steps, r->ms_per_step,
            r->steps_per_second);
-    if (r->stands)
-        printf("%.5f | %+.5f | %+.5f | %+.3f | ", r->top_disp, r->dx, r->dy, r->angle_deg);
+    if (r->stands && r->asleep_step != 0)
+        printf("%.5f | %+.5f | %+.5f | %+.3f | %u | ", r->top_disp, r->dx, r->dy, r->angle_deg, r->asleep_step);
+    else if (r->stands)
+        printf("%.5f | %+.5f | %+.5f | %+.3f | - | ", r->top_disp, r->dx, r->dy, r->angle_deg);
     else
-        printf("- | - | - | - | ");
+        printf("- | - | - | - | - | ");
     printf("%u | %u | %u |\n", r->awake_end, r->touching_end, r->capacity_misses);
     fflush(stdout);
 }
@@ -606,6 +655,7 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--json] [--no-sleep]\n"
+            "                         [--substeps N] [--contact-hertz HZ] [--damping-ratio Z]\n"
             "       pogon-bench all | effects [SCENE] | memory | snapshot | compare   [options]\n"
             "scenes: pyramid (count = rows, default 20), stack (boxes, default 20), rain (circles, default 1000)\n"
             "steps default to 600 (pyramid, stack) and 300 (rain); repeat defaults to 3 (median reported)\n");
@@ -640,6 +690,23 @@ int main(int argc, char **argv)
                 return 2;
             }
             g_warmup_runs = v;
+            ++i;
+        } else if (strcmp(a, "--substeps") == 0) {
+            uint32_t v;
+            if (i + 1 >= argc || !parse_u32(argv[i + 1], &v) || v == 0) {
+                fprintf(stderr, "pogon-bench: --substeps needs a positive integer\n");
+                return 2;
+            }
+            g_settings.substeps = v;
+            ++i;
+        } else if (strcmp(a, "--contact-hertz") == 0 || strcmp(a, "--damping-ratio") == 0) {
+            pg_fix v;
+            if (i + 1 >= argc || pg_fix_parse(argv[i + 1], strlen(argv[i + 1]), &v) != PG_FIX_OK || v <= 0) {
+                fprintf(stderr, "pogon-bench: %s needs a positive decimal number (e.g. 30 or 2.5)\n", a);
+                return 2;
+            }
+            if (a[2] == 'c') g_settings.contact_hertz = v;
+            else g_settings.damping_ratio = v;
             ++i;
         } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             usage(stdout);
