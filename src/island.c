@@ -21,6 +21,18 @@ static void unite(uint32_t *parent, uint32_t a, uint32_t b)
     else if (rb < ra) parent[ra] = rb;
 }
 
+/* Rest is counted in whole steps: an island sleeps after time_to_sleep x step_hz steps
+ * at rest, rounded to the nearest step (30 for 0.5 s at 60 Hz; 5 for 0.1 s at 50 Hz,
+ * although 0.1 is 0.10000610 in Q16.16). Comparing the summed seconds instead took 31
+ * at 60 Hz, because dt = 1/60 s rounds down to 1092 / 65536 s and 30 of them fall 8 LSB
+ * short of 0.5 s. `rested` is a whole number of dt (a restored value is rounded). */
+static int rested_long_enough(const pg_world *w, pg_fix rested, pg_fix dt)
+{
+    int64_t steps = ((int64_t)rested + dt / 2) / dt;
+    int64_t needed = ((int64_t)w->def.time_to_sleep * w->def.step_hz + 32768) / 65536;
+    return steps >= needed;
+}
+
 void pg__update_sleep(pg_world *w)
 {
     uint32_t *parent = w->island_parent, i;
@@ -60,7 +72,7 @@ void pg__update_sleep(pg_world *w)
         uint32_t r;
         if (!pg__body_is_active(b)) continue;
         r = find_root(parent, i);
-        if (min_time[r] >= w->def.time_to_sleep) {
+        if (rested_long_enough(w, min_time[r], dt)) {
             /* its cached world geometry is from the start of this step: recompute it at
              * the next, so cached geometry is always a function of the saved state */
             b->flags = (b->flags & ~(uint32_t)PG_BODY_FLAG_AWAKE) | PG_BODY_FLAG_GEOMETRY_DIRTY;

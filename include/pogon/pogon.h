@@ -114,7 +114,8 @@ typedef struct pg_world_def {
     pg_fix max_linear_speed;    /* cap, default 400 m/s, counted in stats.speed_clamps */
     pg_fix sleep_linear_tolerance;  /* default 0.05 m/s */
     pg_fix sleep_angular_tolerance; /* default 2 degrees/s (0.0349 rad/s) */
-    pg_fix time_to_sleep;       /* seconds at rest before an island sleeps, default 0.5 */
+    pg_fix time_to_sleep;       /* seconds at rest before an island sleeps, default 0.5;
+                                   counted in steps, to the nearest (30 at 60 Hz) */
     uint32_t max_bodies;        /* capacities, default 1024 / 2048 / 4096 */
     uint32_t max_shapes;
     uint32_t max_contacts;

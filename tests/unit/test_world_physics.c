@@ -704,6 +704,39 @@ static void test_sleeping_off_never_sleeps(void **state)
     free_world(&t);
 }
 
+/* A body at rest from the start sleeps after time_to_sleep x step_hz steps, to the
+ * nearest step: 30 at 60 Hz for 0.5 s, 7 at 7 Hz for 1 s (dt rounds down to 9362 / 65536
+ * s, and summing seconds took 8; 31 at 60 Hz), 5 at 50 Hz for 0.1 s (6554 / 65536 s). */
+static void test_sleeps_after_time_to_sleep_in_whole_steps(void **state)
+{
+    static const struct { uint32_t hz; double seconds; int steps; } cases[] = {{60, 0.5, 30}, {7, 1.0, 7}, {50, 0.1, 5}, {60, 0.25, 15}};
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        pg_world_def d = pg_default_world_def();
+        test_world t;
+        pg_shape_def sd = pg_default_shape_def();
+        pg_body_def bd = dynamic_at(0, 0);
+        pg_body_id box;
+        int i;
+        d.gravity = pg_v2(0, 0);
+        d.step_hz = cases[k].hz;
+        d.time_to_sleep = fx(cases[k].seconds);
+        d.max_bodies = 4;
+        d.max_shapes = 4;
+        d.max_contacts = 4;
+        t = make_world_def(&d);
+        assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &box), PG_OK);
+        for (i = 1; i <= cases[k].steps; ++i) {
+            assert_int_equal(pg_world_step(t.w), PG_OK);
+            if (pg_body_is_awake(t.w, box) != (i < cases[k].steps))
+                fail_msg("%u Hz, %.2f s: after step %d the box is %s", cases[k].hz, cases[k].seconds, i,
+                         pg_body_is_awake(t.w, box) ? "awake" : "asleep");
+        }
+        free_world(&t);
+    }
+}
+
 /* ---- kinematic ----------------------------------------------------------------------------------- */
 static void test_kinematic_moves_at_its_velocity(void **state)
 {
@@ -909,6 +942,7 @@ int main(void)
         cmocka_unit_test(test_sleep_and_wake_by_contact),
         cmocka_unit_test(test_wake_by_set_velocity),
         cmocka_unit_test(test_sleeping_off_never_sleeps),
+        cmocka_unit_test(test_sleeps_after_time_to_sleep_in_whole_steps),
         cmocka_unit_test(test_kinematic_moves_at_its_velocity),
         cmocka_unit_test(test_kinematic_pushes_dynamic),
         cmocka_unit_test(test_determinism),
