@@ -77,7 +77,7 @@ typedef struct spoint {
     double ln, lt, max_ln;
 } spoint;
 
-typedef struct sbody { vec v; double w; vec c0, c; double a0, a; double dqc, dqs; int dynamic; } sbody;
+typedef struct sbody { vec v; double w; vec c0, c; double a0, a; double dqc, dqs; int dynamic, turns_anchors; } sbody;
 
 typedef struct constraint {
     int a, b;         /* solver body index, or -1 for a static side */
@@ -701,6 +701,7 @@ void ref_step(ref_world *w)
         s->a0 = s->a = b->a;
         s->dqc = 1;
         s->dqs = 0;
+        s->turns_anchors = 0;
     }
     for (i = 0; i < w->contact_count; ++i) {
         const contact *ct = &w->contacts[i];
@@ -715,6 +716,9 @@ void ref_step(ref_world *w)
         c->soft_static = A->im == 0 || B->im == 0;
         c->round_a = A->local.count == 1;
         c->round_b = B->local.count == 1;
+        /* as in pogon: only bodies with an anchor that turns need the substep rotation */
+        if (!c->round_a && c->a >= 0) w->sbodies[c->a].turns_anchors = 1;
+        if (!c->round_b && c->b >= 0) w->sbodies[c->b].turns_anchors = 1;
         c->restitution = d->restitution ? ct->restitution : 0;
         for (k = 0; k < c->count; ++k) {
             spoint *p = &c->p[k];
@@ -766,8 +770,10 @@ void ref_step(ref_world *w)
             s->c = vadd(s->c, vscale(s->v, h));
             if (d->rotation && s->w != 0) {
                 s->a += s->w * h;
-                s->dqc = cos(s->a - s->a0);
-                s->dqs = sin(s->a - s->a0);
+                if (s->turns_anchors) {
+                    s->dqc = cos(s->a - s->a0);
+                    s->dqs = sin(s->a - s->a0);
+                }
             }
         }
         for (i = 0; i < n_cons; ++i) solve(w, &ctx, &w->cons[i], 0, order);
