@@ -332,7 +332,13 @@ PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point 
 {
     int64_t max_f = pg__round_shift64((int64_t)p->friction_ratio * p->normal_impulse, 16), acc;
     if (max_f > LAMBDA_MAX) max_f = LAMBDA_MAX;
-    acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(va, vb, t, p->ctA, p->ctB), -max_f, max_f);
+    if (max_f == 0) {
+        /* an unloaded contact: the bound is 0 whatever the sliding speed */
+        if (p->tangent_impulse == 0) return;
+        acc = 0;
+    } else {
+        acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(va, vb, t, p->ctA, p->ctB), -max_f, max_f);
+    }
     if (acc == p->tangent_impulse) return; /* 40 % of the pyramid's rows: unloaded contacts */
     apply_row(va, vb, acc - p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
     p->tangent_impulse = (pg_fix)acc;
@@ -410,6 +416,7 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
     int32_t k;
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
+        if (p->normal_impulse == 0 && p->tangent_impulse == 0) continue; /* nothing to apply */
         if (c->normal_linear) apply_linear(&va, &vb, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
         else apply_row(&va, &vb, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
         apply_row(&va, &vb, p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
