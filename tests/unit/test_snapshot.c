@@ -17,46 +17,11 @@
 
 #include "pogon/pogon.h"
 #include "pogon/replay.h"
+#include "pg_test_alloc.h"
 #include "scenes.h"
 
 static pg_fix fx(double v) { return (pg_fix)llround(v * 65536.0); }
 
-/* Allocations are tracked so that a failing test (cmocka leaves it by longjmp) does not
- * leave leak reports that hide the real failure: the teardown frees what is left. */
-#define MAX_TRACKED 1024
-static void *tracked[MAX_TRACKED];
-static void *t_malloc(size_t n)
-{
-    int i;
-    void *p = malloc(n > 0 ? n : 1u);
-    if (p == NULL) return NULL;
-    for (i = 0; i < MAX_TRACKED; ++i)
-        if (tracked[i] == NULL) { tracked[i] = p; return p; }
-    fail_msg("%s", "too many tracked allocations");
-    return p;
-}
-static void *t_calloc(size_t n, size_t size)
-{
-    void *p = t_malloc(n * size);
-    if (p != NULL) memset(p, 0, n * size);
-    return p;
-}
-static void t_free(void *p)
-{
-    int i;
-    if (p == NULL) return;
-    for (i = 0; i < MAX_TRACKED; ++i)
-        if (tracked[i] == p) { tracked[i] = NULL; break; }
-    free(p);
-}
-static int free_leftovers(void **state)
-{
-    int i;
-    (void)state;
-    for (i = 0; i < MAX_TRACKED; ++i)
-        if (tracked[i] != NULL) { free(tracked[i]); tracked[i] = NULL; }
-    return 0;
-}
 
 /* ---- worlds in malloc'd memory ----------------------------------------------------------------- */
 typedef struct test_world {
