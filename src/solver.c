@@ -92,9 +92,17 @@ typedef struct constraint {
 
 typedef struct softness { pg_fix bias_rate; int32_t mass_scale, impulse_scale; /* Q2.30 */ } softness;
 
+/* Byte offset of the constraints in the scratch: after the solver bodies, rounded up to
+ * 8 because a constraint holds int64 fields and a solver body's size need not be a
+ * multiple of 8. */
+static size_t constraints_offset(uint32_t max_bodies)
+{
+    return (sizeof(solver_body) * ((size_t)max_bodies + 1u) + 7u) & ~(size_t)7u;
+}
+
 size_t pg__solver_scratch_bytes(const pg_world_def *def)
 {
-    return sizeof(solver_body) * ((size_t)def->max_bodies + 1u) + sizeof(constraint) * def->max_contacts +
+    return constraints_offset(def->max_bodies) + sizeof(constraint) * def->max_contacts +
            sizeof(uint32_t) * def->max_bodies + 64u;
 }
 
@@ -449,7 +457,7 @@ void pg__solve(pg_world *w)
     unsigned char *scratch = (unsigned char *)w->solver_scratch;
     solver_body *bodies = (solver_body *)(void *)scratch;
     uint32_t dummy = w->def.max_bodies; /* the static side of a contact */
-    constraint *cons = (constraint *)(void *)(scratch + sizeof(solver_body) * ((size_t)w->def.max_bodies + 1u));
+    constraint *cons = (constraint *)(void *)(scratch + constraints_offset(w->def.max_bodies));
     uint32_t *active = (uint32_t *)(void *)((unsigned char *)cons + sizeof(constraint) * w->def.max_contacts);
     uint32_t n_active = 0, n_cons = 0, i, sub;
     step_context ctx;
