@@ -347,7 +347,7 @@ PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point 
     } else {
         acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(va, vb, t, p->ctA, p->ctB), -max_f, max_f);
     }
-    if (acc == p->tangent_impulse) return; /* 40 % of the pyramid's rows: unloaded contacts */
+    if (acc == p->tangent_impulse) return; /* held at its bound: nothing changes */
     apply_row(va, vb, acc - p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
     p->tangent_impulse = (pg_fix)acc;
 }
