@@ -79,6 +79,8 @@ typedef struct result {
     double top_disp, dx, dy, angle_deg;
     uint32_t awake_end, contacts_end, touching_end, capacity_misses, speed_clamps;
     uint32_t asleep_step;   /* stands, sleeping on: first step after which nothing was awake */
+    uint32_t substeps;      /* the solver settings the run used */
+    pg_fix contact_hertz, damping_ratio;
     size_t memory_bytes;
 } result;
 
@@ -182,6 +184,9 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
     if (g_settings.substeps != 0) def.substeps = g_settings.substeps;
     if (g_settings.contact_hertz != 0) def.contact_hertz = g_settings.contact_hertz;
     if (g_settings.damping_ratio != 0) def.contact_damping_ratio = g_settings.damping_ratio;
+    res->substeps = def.substeps;
+    res->contact_hertz = def.contact_hertz;
+    res->damping_ratio = def.contact_damping_ratio;
     size = pg_scene_memory_size(scene, count, &def);
     res->memory_bytes = size;
     if (size == 0) {
@@ -257,14 +262,10 @@ static void print_json(const result *r)
            "\"effects\":%u,\"trig_table_bits\":%d,",
            r->scene, r->count, r->bodies, r->steps, r->warmup, g_warmup_runs, r->repeat, r->effects, PG_TRIG_TABLE_BITS);
     {
-        pg_world_def d = pg_scene_world_def(r->scene, r->count);
-        char hz[24], zeta[24];
-        if (g_settings.substeps != 0) d.substeps = g_settings.substeps;
-        if (g_settings.contact_hertz != 0) d.contact_hertz = g_settings.contact_hertz;
-        if (g_settings.damping_ratio != 0) d.contact_damping_ratio = g_settings.damping_ratio;
-        pg_fix_format(d.contact_hertz, hz, sizeof hz);
-        pg_fix_format(d.contact_damping_ratio, zeta, sizeof zeta);
-        printf("\"substeps\":%u,\"contact_hertz\":%s,\"damping_ratio\":%s,", d.substeps, hz, zeta);
+        char hz[PG_FIX_FORMAT_MAX], zeta[PG_FIX_FORMAT_MAX];
+        pg_fix_format(r->contact_hertz, hz, sizeof hz);
+        pg_fix_format(r->damping_ratio, zeta, sizeof zeta);
+        printf("\"substeps\":%u,\"contact_hertz\":%s,\"damping_ratio\":%s,", r->substeps, hz, zeta);
     }
     if (r->label != NULL) printf("\"variant\":\"%s\",", r->label);
     printf("\"ms_per_step\":%.6f,\"ms_min\":%.6f,\"ms_max\":%.6f,\"steps_per_second\":%.2f,", r->ms_per_step, r->ms_min,
