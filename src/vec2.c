@@ -2,7 +2,6 @@
 #include "pogon/fixed.h"
 #include "intmath.h"
 
-
 pg_fix pg_v2_length(pg_vec2 v)
 {
     uint64_t ax = (uint64_t)(v.x < 0 ? -(int64_t)v.x : v.x), ay = (uint64_t)(v.y < 0 ? -(int64_t)v.y : v.y);
