@@ -141,11 +141,38 @@ pg_result pg_body_destroy(pg_world *world, pg_body_id id)
 int pg_body_is_valid(const pg_world *world, pg_body_id body) { return pg__body(world, body) != NULL; }
 
 /* ---- mass ------------------------------------------------------------------------------------ */
-/* Would the body's mass properties fit their formats with its shapes at `density`
- * (0: each shape's own) plus `extra` at `extra_density`? A 100 m box at density 100
- * has an inertia of 1.7e9 kg m^2, beyond Q28.36's 1.3e8: such a body is refused rather
- * than silently saturated. */
-int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, const pg_geom *extra, pg_fix extra_density)
+/* Mass properties that do not fit their formats are refused, never silently saturated.
+ * Above: a 100 m box at density 100 has an inertia of 1.7e9 kg m^2, beyond Q28.36's
+ * 1.3e8. Below: the inverses are Q25.38 (2^70 / mass, 2^74 / inertia), so a mass must
+ * exceed 2^7 in Q32.32 (3.0e-8 kg) and an inertia 2^11 in Q28.36 (3.0e-8 kg m^2). The
+ * shape and density limits do not guarantee the second: a triangle of circumradius
+ * 0.025 m at density 0.1 has 1.27e-8 kg m^2, and its inverse would saturate at 0.43 of
+ * the true value (angular impulses would turn it too little). */
+#define MASS_MIN_Q32 (INT64_C(1) << 7)
+#define INERTIA_MIN_Q36 (INT64_C(1) << 11)
+/* And the solver's lever-arm coefficients, invI (r x n) / K, reach 1 / (2 k) for a
+ * radius of gyration k = sqrt(I / m), which must stay within their Q8.24 (128 per
+ * metre): k >= 2^-8 m. k^2 = I / m = (I_q36 / 2^36) / (m_q32 / 2^32), so the condition
+ * is I_q36 >= m_q32 / 2^12. Only small dense polygons get there (an equilateral
+ * triangle of 0.012 m edges at density 100 has k = 0.0035 m); every shape made by the
+ * pg_make_* functions inside the size limits has k >= 0.0125 m. */
+static int too_compact(pg_mass_data md) { return md.inertia < (md.mass >> 12); }
+
+const char *pg__mass_data_problem(pg_mass_data md, int rotates)
+{
+    if (md.mass == INT64_MAX || md.inertia == INT64_MAX)
+        return "the body's inertia would exceed 1.3e8 kg m^2 (Q28.36): make it smaller or lighter";
+    if (md.mass > 0 && md.mass <= MASS_MIN_Q32)
+        return "the body's mass would be below 3.0e-8 kg (its inverse leaves Q25.38): make it larger or denser";
+    if (rotates && md.inertia > 0 && md.inertia <= INERTIA_MIN_Q36)
+        return "the body's inertia would be below 3.0e-8 kg m^2 (its inverse leaves Q25.38): make it larger or denser, or give it fixed rotation";
+    if (rotates && md.inertia > 0 && too_compact(md))
+        return "the body would be too compact: its radius of gyration below 0.0039 m (the solver's Q8.24 lever arms): make it larger, or give it fixed rotation";
+    return NULL;
+}
+
+const char *pg__body_mass_problem(const pg_world *world, uint32_t body_index, pg_fix density, uint32_t skip,
+                                  const pg_geom *extra, pg_fix extra_density, int rotates)
 {
     const pg_body *b = &world->bodies[body_index];
     const pg_geom *geoms[65];
@@ -154,6 +181,7 @@ int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, co
     uint32_t s;
     pg_mass_data md;
     for (s = b->first_shape; s != PG_NULL_INDEX && n < 64; s = world->shapes[s].next) {
+        if (s == skip) continue;
         geoms[n] = &world->shapes[s].local;
         densities[n] = density != 0 ? density : world->shapes[s].density;
         ++n;
@@ -164,7 +192,7 @@ int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, co
         ++n;
     }
     md = pg_compound_mass(geoms, densities, n);
-    return md.mass < INT64_MAX && md.inertia < INT64_MAX;
+    return pg__mass_data_problem(md, rotates);
 }
 
 /* round(2^(63 + e) / d), ties up, exactly as pg__div64_shl(2^(25 + e), d, 38) rounds it.
@@ -354,8 +382,10 @@ pg_result pg_body_set_type(pg_world *world, pg_body_id id, pg_body_type type)
     if (type != PG_BODY_STATIC && type != PG_BODY_KINEMATIC && type != PG_BODY_DYNAMIC)
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
     if (b->type == type) return PG_OK;
-    if (type == PG_BODY_DYNAMIC && !pg__mass_fits(world, id.index, 0, NULL, 0))
-        return pg__fail(world, PG_ERR_ENVELOPE, "as a dynamic body its inertia would exceed 1.3e8 kg m^2 (Q28.36): make it smaller or lighter");
+    if (type == PG_BODY_DYNAMIC) {
+        const char *why = pg__body_mass_problem(world, id.index, 0, PG_NULL_INDEX, NULL, 0, (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0);
+        if (why != NULL) return pg__fail(world, PG_ERR_ENVELOPE, why);
+    }
     pg__remove_body_contacts(world, id.index); /* pairs are found again next step */
     b->type = type;
     if (type == PG_BODY_STATIC) b->v = pg_v2_zero(), b->w = 0;
@@ -403,6 +433,10 @@ pg_result pg_body_set_damping(pg_world *world, pg_body_id id, pg_fix linear, pg_
 pg_result pg_body_set_fixed_rotation(pg_world *world, pg_body_id id, int fixed)
 {
     GET_BODY("pg_body_set_fixed_rotation: body handle is stale or invalid");
+    if (!fixed && b->type == PG_BODY_DYNAMIC) {
+        const char *why = pg__body_mass_problem(world, id.index, 0, PG_NULL_INDEX, NULL, 0, 1);
+        if (why != NULL) return pg__fail(world, PG_ERR_ENVELOPE, why);
+    }
     if (fixed) b->flags |= PG_BODY_FLAG_FIXED_ROTATION, b->w = 0;
     else b->flags &= ~(uint32_t)PG_BODY_FLAG_FIXED_ROTATION;
     pg__body_update_mass(world, id.index);
@@ -426,8 +460,10 @@ static pg_result set_material(pg_world *world, pg_body_id id, int which, pg_fix 
     if (which == 2 && b->type == PG_BODY_DYNAMIC && (value < PG_ENV_MIN_DENSITY || value > PG_ENV_MAX_DENSITY))
         return pg__fail_value(world, PG_ERR_ENVELOPE, "density", value, "is outside 0.1..100 kg/m^2");
     if (which == 2 && (value < 0 || value > PG_ENV_MAX_DENSITY)) return pg__fail_value(world, PG_ERR_ENVELOPE, "density", value, "is outside 0..100 kg/m^2");
-    if (which == 2 && b->type == PG_BODY_DYNAMIC && !pg__mass_fits(world, id.index, value, NULL, 0))
-        return pg__fail_value(world, PG_ERR_ENVELOPE, "density", value, "makes the body's inertia exceed 1.3e8 kg m^2 (Q28.36)");
+    if (which == 2 && b->type == PG_BODY_DYNAMIC) {
+        const char *why = pg__body_mass_problem(world, id.index, value, PG_NULL_INDEX, NULL, 0, (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0);
+        if (why != NULL) return pg__fail(world, PG_ERR_ENVELOPE, why);
+    }
     for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
         if (which == 0) world->shapes[s].friction = value;
         else if (which == 1) world->shapes[s].restitution = value;

@@ -226,6 +226,7 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     pg_shape *s;
     uint32_t i, *link;
     pg_result r;
+    const char *why;
     if (out != NULL) out->index = 0, out->generation = 0;
     if (world == NULL || def == NULL || geometry == NULL || out == NULL) return PG_ERR_NULL;
     if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_shape_create: body handle is stale or invalid");
@@ -237,8 +238,8 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     if (b->type == PG_BODY_DYNAMIC) {
         pg_geom local;
         pg__shape_build_local(geometry, &local);
-        if (!pg__mass_fits(world, body.index, 0, &local, def->density))
-            return pg__fail(world, PG_ERR_ENVELOPE, "the body's inertia would exceed 1.3e8 kg m^2 (Q28.36): make it smaller or lighter");
+        why = pg__body_mass_problem(world, body.index, 0, PG_NULL_INDEX, &local, def->density, (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0);
+        if (why != NULL) return pg__fail(world, PG_ERR_ENVELOPE, why);
     }
     for (i = 0; i < world->def.max_shapes; ++i)
         if (!world->shapes[i].used) break;
@@ -281,6 +282,12 @@ pg_result pg_shape_destroy(pg_world *world, pg_shape_id id)
     if (world == NULL) return PG_ERR_NULL;
     if (s == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_shape_destroy: shape handle is stale or invalid");
     b = &world->bodies[s->body];
+    if (b->type == PG_BODY_DYNAMIC) {
+        /* what remains must still fit (removing a shape only lowers the inertia, so only
+         * the lower limit can be crossed: a large shape holding a tiny one) */
+        const char *why = pg__body_mass_problem(world, s->body, 0, id.index, NULL, 0, (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0);
+        if (why != NULL) return pg__fail(world, PG_ERR_ENVELOPE, why);
+    }
     pg__remove_body_contacts(world, s->body); /* simplest correct: the body's pairs are found again */
     for (link = &b->first_shape; *link != id.index; link = &world->shapes[*link].next) {}
     *link = s->next;
@@ -319,6 +326,7 @@ static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_de
     pg_body_id id;
     pg_shape_id sid;
     pg_result r;
+    const char *why;
     int i;
     if (w == NULL || bd == NULL || sd == NULL || out == NULL) return PG_ERR_NULL;
     out->index = 0;
@@ -342,8 +350,8 @@ static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_de
                 dens[i] = sd->density;
             }
             md = pg_compound_mass(ptrs, dens, n < 2 ? n : 2);
-            if (md.mass == INT64_MAX || md.inertia == INT64_MAX)
-                return pg__fail(w, PG_ERR_ENVELOPE, "the body's inertia would exceed 1.3e8 kg m^2 (Q28.36): make it smaller or lighter");
+            why = pg__mass_data_problem(md, !bd->fixed_rotation);
+            if (why != NULL) return pg__fail(w, PG_ERR_ENVELOPE, why);
         }
     }
     r = pg_body_create(w, bd, &id);

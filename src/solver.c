@@ -7,7 +7,7 @@
  * lasting overlap and bouncy correction; they use the current separation each substep.
  *
  * FIXED-POINT FORMULATION (the part that is ours)
- * Masses span 2.5e-4 .. 2.5e5 kg and inertias 1e-7 .. 1e8 kg m^2, so impulses (kg m/s)
+ * Masses span 8e-5 .. 3e5 kg and inertias 3e-8 .. 1.3e8 kg m^2, so impulses (kg m/s)
  * do not fit Q16.16. But the solver never needs an impulse itself, only what it does to
  * velocities. For a contact row with effective inverse mass
  *     K = 1/mA + 1/mB + (rA x n)^2/IA + (rB x n)^2/IB,
@@ -193,7 +193,8 @@ static inline int64_t mul_q16(int64_t a, pg_fix c)
 
 /* Coefficients of one row (normal or tangent) for one point; returns the row's
  * normalised denominator. gA = invI_A (rA x d) / K is bounded by 1 / (2 k) for the
- * radius of gyration k >= 0.0177 m in the envelope, so it fits Q8.24 easily. */
+ * radius of gyration k >= 2^-8 m, which body.c makes a condition of a rotating body
+ * (pg__mass_data_problem), so it fits Q8.24. */
 static denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation,
                                     int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
 {

@@ -448,6 +448,15 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                         at = r->pos;
                         b.inertia = take_i64(r, "body.inertia");
                         if (b.inertia < 0) invalid(r, at, "body.inertia (negative)");
+                        else if (r->error_field == NULL) {
+                            /* what a world refuses to create, a snapshot may not hold */
+                            pg_mass_data md;
+                            md.mass = b.mass;
+                            md.inertia = b.inertia;
+                            md.center = b.local_center;
+                            if (pg__mass_data_problem(md, (flags & PG_BODY_FLAG_FIXED_ROTATION) == 0) != NULL)
+                                invalid(r, at, "body.mass or body.inertia (outside the envelope: its inverse leaves Q25.38)");
+                        }
                     }
                     pg__body_set_inverse_mass(&b);
                     /* one encoding per state: a present optional field is not its default */

@@ -11,6 +11,7 @@
 #include "pogon/pogon.h"
 #include "broadphase.h"
 #include "geom.h"
+#include "mass.h"
 
 #define PG_NULL_INDEX 0xFFFFFFFFu
 
@@ -135,7 +136,14 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index);
 void pg__body_set_inverse_mass(pg_body *b);
 /* round(2^(63 + e) / d) for d > 0, 0 <= e <= 31, as pg__div64_shl(2^(25 + e), d, 38) gives it */
 int64_t pg__reciprocal_pow2(int e, int64_t d);
-int pg__mass_fits(const pg_world *world, uint32_t body_index, pg_fix density, const pg_geom *extra, pg_fix extra_density);
+/* Why mass data cannot be a dynamic body's (its mass, inertia or their inverses leave
+ * their formats), as a message for the user; NULL when it can. `rotates`: the body does
+ * not have fixed rotation (only then is its inverse inertia used). */
+const char *pg__mass_data_problem(pg_mass_data md, int rotates);
+/* The same for body `body_index` with its shapes at `density` (0: each shape's own),
+ * without shape slot `skip` (PG_NULL_INDEX: none), plus `extra` at `extra_density`. */
+const char *pg__body_mass_problem(const pg_world *world, uint32_t body_index, pg_fix density, uint32_t skip,
+                                  const pg_geom *extra, pg_fix extra_density, int rotates);
 void pg__body_sync_geometry(pg_world *world, uint32_t body_index); /* world geoms + boxes */
 void pg__wake_body(pg_world *world, uint32_t body_index);         /* and its island */
 /* awake and movable: takes part in the solver (inline: the step asks per body and per contact) */

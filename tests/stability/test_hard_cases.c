@@ -897,9 +897,125 @@ static void test_edge_beyond_is_refused(void **state)
     expect_refused(t.w, pg_make_box(t.w, &b2, &sd, PG_FIX_ONE, PG_FIX_ONE, &id), "position y = -1001");
     b2 = bd; b2.linear_velocity = pg_v2(pg_fix_add(d.max_linear_speed, PG_FIX_ONE), 0);
     expect_refused(t.w, pg_make_box(t.w, &b2, &sd, PG_FIX_ONE, PG_FIX_ONE, &id), "speed 401 m/s");
+    b2 = bd; b2.angular_velocity = PG_FIX_C(1001);
+    expect_refused(t.w, pg_make_box(t.w, &b2, &sd, PG_FIX_ONE, PG_FIX_ONE, &id), "angular speed 1001 rad/s");
+    b2.angular_velocity = -PG_FIX_C(1001);
+    expect_refused(t.w, pg_make_box(t.w, &b2, &sd, PG_FIX_ONE, PG_FIX_ONE, &id), "angular speed -1001 rad/s");
+    /* A triangle of circumradius 0.025 m (inside the size limit) at density 0.1 has an
+     * inertia of 1.27e-8 kg m^2, below the 3.0e-8 whose inverse still fits Q25.38. */
+    s2 = sd; s2.density = fx(0.1);
+    expect_refused(t.w, pg_make_triangle(t.w, &bd, &s2, fx(0.025), &id), "triangle R 0.025 m, density 0.1 (inertia 1.3e-8)");
+    expect_refused(t.w, pg_make_star(t.w, &bd, &s2, fx(0.025), &id), "star R 0.025 m, density 0.1");
+    expect_refused(t.w, pg_world_set_gravity(t.w, pg_v2(PG_FIX_C(1001), 0)), "gravity x 1001 m/s^2");
+    expect_refused(t.w, pg_world_set_gravity(t.w, pg_v2(0, -PG_FIX_C(1001))), "gravity y -1001 m/s^2");
+    assert_true(pg_v2_equal(pg_world_gravity(t.w), d.gravity)); /* unchanged */
+    d.gravity = pg_v2(PG_FIX_C(1001), 0);
+    assert_non_null(pg_world_def_problem(&d));
     assert_int_equal(pg_world_get_stats(t.w).body_count, 0);
     assert_int_equal(pg_world_get_stats(t.w).shape_count, 0);
     free_world(&t);
+}
+
+/* The edges themselves are accepted: angular speed +-1000 rad/s, gravity +-1000 m/s^2
+ * per component. */
+static void test_edge_angular_speed_and_gravity_limits_accepted(void **state)
+{
+    test_world t = make_world(PG_EFFECTS_ALL);
+    pg_world_def d = pg_world_get_def(t.w);
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_def bd = dynamic_at(0, 0);
+    pg_body_id a, b;
+    (void)state;
+    bd.angular_velocity = PG_FIX_C(1000);
+    assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &a), PG_OK);
+    bd = dynamic_at(10, 0);
+    bd.angular_velocity = -PG_FIX_C(1000);
+    assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &b), PG_OK);
+    assert_int_equal(pg_body_angular_velocity(t.w, a), PG_FIX_C(1000));
+    assert_int_equal(pg_body_angular_velocity(t.w, b), -PG_FIX_C(1000));
+    expect_refused(t.w, pg_body_set_angular_velocity(t.w, a, PG_FIX_C(1001)), "pg_body_set_angular_velocity 1001 rad/s");
+    assert_int_equal(pg_body_angular_velocity(t.w, a), PG_FIX_C(1000)); /* unchanged */
+    assert_int_equal(pg_body_set_angular_velocity(t.w, a, -PG_FIX_C(1000)), PG_OK);
+    assert_int_equal(pg_world_set_gravity(t.w, pg_v2(PG_FIX_C(1000), -PG_FIX_C(1000))), PG_OK);
+    d.gravity = pg_v2(-PG_FIX_C(1000), PG_FIX_C(1000));
+    assert_null(pg_world_def_problem(&d));
+    free_world(&t);
+}
+
+/* The smallest inertia (3.0e-8 kg m^2, where the Q25.38 inverse ends) is a limit like the
+ * largest: what would cross it is refused, with the body unchanged, and a body just
+ * above it turns exactly as its inertia says. The triangle of circumradius 0.025 m has
+ * I = m R^2 / 4 with m = rho (3 sqrt 3 / 4) R^2, so 1.27e-8 kg m^2 at density 0.1 and
+ * 6.3e-8 at density 0.5. */
+static void test_edge_smallest_inertia(void **state)
+{
+    test_world t = make_world(PG_EFFECTS_ALL & ~PG_EFFECT_GRAVITY);
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_def bd = dynamic_at(0, 0);
+    pg_body_id tri, big;
+    pg_shape_id shapes[2];
+    pg_geometry g;
+    double inertia, want, dw;
+    int ok = 1;
+    (void)state;
+    /* with fixed rotation the inverse inertia is not used: allowed, but it cannot turn on */
+    sd.density = fx(0.1);
+    bd.fixed_rotation = 1;
+    assert_int_equal(pg_make_triangle(t.w, &bd, &sd, fx(0.025), &tri), PG_OK);
+    expect_refused(t.w, pg_body_set_fixed_rotation(t.w, tri, 0), "turning on rotation of the 1.3e-8 kg m^2 triangle");
+    assert_int_equal(pg_body_destroy(t.w, tri), PG_OK);
+    /* raising the density past the floor is fine, lowering it below is refused */
+    bd.fixed_rotation = 0;
+    sd.density = fx(0.5);
+    assert_int_equal(pg_make_triangle(t.w, &bd, &sd, fx(0.025), &tri), PG_OK);
+    expect_refused(t.w, pg_body_set_density(t.w, tri, fx(0.1)), "density 0.1 on the small triangle");
+    inertia = (double)pg_body_inertia(t.w, tri) / Q36;
+    want = 0.5 * (3.0 * sqrt(3.0) / 4.0) * 0.025 * 0.025 * 0.025 * 0.025 / 4.0;
+    print_message("triangle R 0.025 m, density 0.5: inertia %.4g kg m^2 (exact %.4g)\n", inertia, want);
+    ok &= within(fabs(inertia - want) / want, 0.02, "small triangle: relative error of the inertia");
+    /* the smallest angular impulse, 1/65536 N m s, changes w by that over I: 240 rad/s
+     * (a saturated inverse inertia would give a fraction of it) */
+    assert_int_equal(pg_body_apply_angular_impulse(t.w, tri, 1), PG_OK);
+    dw = fd(pg_body_angular_velocity(t.w, tri));
+    print_message("angular impulse 1/65536 N m s: w = %.3f rad/s (impulse / inertia %.3f)\n", dw, LSB / inertia);
+    ok &= within(fabs(dw - LSB / inertia) / (LSB / inertia), 1e-3, "small triangle: w after an angular impulse, relative error");
+    /* a large box holding the small triangle (density 0.1) fits; taking the box away would
+     * leave the triangle alone below the floor: refused, the body keeps both shapes */
+    bd = dynamic_at(5, 0);
+    sd.density = fx(0.1);
+    assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &big), PG_OK);
+    assert_int_equal(pg_geometry_triangle(pg_v2(0, PG_FIX_C(2)), fx(0.025), 0, &g), PG_OK);
+    assert_int_equal(pg_shape_create(t.w, big, &sd, &g, &shapes[1]), PG_OK);
+    assert_int_equal(pg_body_shapes(t.w, big, shapes, 2), 2);
+    assert_int_equal(pg_shape_geometry(t.w, shapes[0], &g), PG_OK);
+    if (g.count != 4) shapes[0] = shapes[1]; /* the box */
+    expect_refused(t.w, pg_shape_destroy(t.w, shapes[0]), "destroying the box that holds a 1.3e-8 kg m^2 triangle");
+    assert_int_equal(pg_body_shapes(t.w, big, shapes, 2), 2);
+    /* A small dense polygon passes the inertia floor but would be too compact for the
+     * solver's Q8.24 lever arms (radius of gyration below 2^-8 m): an equilateral
+     * triangle of 0.012 m edges at density 100 has I = m s^2 / 12 = 7.5e-8 kg m^2 and
+     * k = s / sqrt 12 = 0.0035 m; with 0.02 m edges k = 0.0058 m, accepted. */
+    {
+        pg_vec2 v[3];
+        double edge[2] = {0.012, 0.02};
+        int k;
+        sd.density = PG_FIX_C(100);
+        for (k = 0; k < 2; ++k) {
+            pg_body_id small;
+            pg_result r;
+            v[0] = pg_v2(0, 0);
+            v[1] = pg_v2(fx(edge[k]), 0);
+            v[2] = pg_v2(fx(edge[k] / 2), fx(edge[k] * sqrt(3.0) / 2));
+            assert_int_equal(pg_geometry_polygon(v, 3, &g), PG_OK);
+            bd = dynamic_at(-5 - k, 0);
+            assert_int_equal(pg_body_create(t.w, &bd, &small), PG_OK);
+            r = pg_shape_create(t.w, small, &sd, &g, &shapes[0]);
+            if (k == 0) expect_refused(t.w, r, "triangle of 0.012 m edges at density 100 (radius of gyration 0.0035 m)");
+            else assert_int_equal(r, PG_OK);
+        }
+    }
+    free_world(&t);
+    if (!ok) fail();
 }
 #endif /* PG_HARD_GROUP == 1 */
 
@@ -1181,6 +1297,8 @@ int main(void)
         cmocka_unit_test(test_edge_max_speed),
         cmocka_unit_test(test_edge_collisions_far_outside_the_envelope),
         cmocka_unit_test(test_edge_beyond_is_refused),
+        cmocka_unit_test(test_edge_angular_speed_and_gravity_limits_accepted),
+        cmocka_unit_test(test_edge_smallest_inertia),
 #else
         cmocka_unit_test(test_spin_exact_for_a_million_steps),
         cmocka_unit_test(test_long_run_one_hour),

@@ -701,6 +701,36 @@ static void test_inconsistent_snapshots_refused(void **state)
         expect_corruption_refused(&r, "body.island names a never-used body slot");
     }
 
+    /* mass data a world refuses to create: its inverse would saturate (Q25.38 ends at a
+     * mass of 2^7 in Q32.32 and an inertia of 2^11 in Q28.36). The box's mass and
+     * inertia are the last 16 bytes of its record. */
+    {
+        size_t end = l.body[src.box.index + 1];
+        uint8_t *c;
+        assert_true(src.box.index + 1 < l.bodies);
+        c = fresh_copy(&r);
+        put32(c + end - 8, 2048u);
+        put32(c + end - 4, 0);
+        expect_corruption_refused(&r, "body.inertia 2^11 in Q28.36 (3.0e-8 kg m^2): its inverse leaves Q25.38");
+        c = fresh_copy(&r);
+        put32(c + end - 16, 128u);
+        put32(c + end - 12, 0);
+        expect_corruption_refused(&r, "body.mass 2^7 in Q32.32 (3.0e-8 kg): its inverse leaves Q25.38");
+        c = fresh_copy(&r); /* 1 kg with a radius of gyration just under 2^-8 m (I < m / 2^12) */
+        put32(c + end - 16, 0);
+        put32(c + end - 12, 1u);
+        put32(c + end - 8, (1u << 20) - 1u);
+        put32(c + end - 4, 0);
+        expect_corruption_refused(&r, "body.inertia of 1 kg under 2^-20 kg m^2: too compact for the solver's Q8.24 lever arms");
+        c = fresh_copy(&r); /* control: just above all three floors is a state a world could hold */
+        put32(c + end - 16, 1u << 20);
+        put32(c + end - 12, 0);
+        put32(c + end - 8, 2049u);
+        put32(c + end - 4, 0);
+        if (pg_world_snapshot_restore(r.target.w, c, s.size) != PG_OK) fail_msg("inertia 2049 refused: %s", pg_world_last_error(r.target.w));
+        assert_int_equal(pg_world_snapshot_restore(r.target.w, r.target_original.bytes, r.target_original.size), PG_OK);
+    }
+
     /* shapes pg_shape_create would refuse */
     fresh_copy(&r)[l.shape[box_shape] + 13] = (uint8_t)PG_SHAPE_CIRCLE; /* a box with 4 vertices as a circle */
     expect_corruption_refused(&r, "shape.kind circle with 4 vertices");
