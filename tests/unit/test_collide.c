@@ -920,7 +920,10 @@ static pg_geom random_shape(pgt_rng *r, double x, double y)
             xy[2 * i] = x + rad * cos(a);
             xy[2 * i + 1] = y + rad * sin(a);
         }
-        return make_poly(xy, n, kind == 5 && n >= 3 ? 0 : 0);
+        /* kinds 4 and 5 are both polygons, radius 0: pogon has no rounded polygons
+         * (pg_geometry in pogon.h: "a polygon is 3..8 vertices, ..., radius 0", and
+         * pg__validate_geometry rejects a polygon with a radius), so none is drawn. */
+        return make_poly(xy, n, 0);
     }
 }
 
@@ -1017,6 +1020,208 @@ static pg_geom shifted(const pg_geom *g, pg_fix dx, pg_fix dy)
     return h;
 }
 
+/* ---- what collide.c promises, for the randomised checks (distances in LSB = 2^-16 m) ---- */
+
+#define REF_TOL 33                          /* PG__REF_TOLERANCE in collide.c, LSB */
+#define HALF_SQRT2 0.70710678118654752440   /* a point rounded per component moves <= this */
+
+/* Bounds on rounding, derived from collide.c (every rounding is to nearest, <= 1/2 LSB):
+ *
+ * VERTEX_POINT  a vertex-to-vertex point (and circle-circle, and a circle in a vertex's
+ *   region) is va + ((vb - va) + (rA - rB) n) / 2, rounded per component (<= HALF_SQRT2);
+ *   its separation uses dist = the nearest integer to |vb - va| (<= 1/2) and n, within
+ *   2 Q30 LSB of the unit vector (test_dir_normalize) times |vb - va| < 2^18 LSB (< 1e-3).
+ *   So p - (s/2 + rA) n = va + (|vb - va| u - dist n) / 2 + rounding lies within
+ *   1/4 + HALF_SQRT2 + 1e-3 of va, and the same for vb.
+ * FACE_ETA  a face of a box placed by pg_geom_transform has exact rotated normals but
+ *   vertices rounded per component, so (v2 - v1) . n, exactly 0 before rounding, is at
+ *   most sqrt(2): the face's line and collide.c's face plane (stored normal, mean offset
+ *   (v1 + v2) . n / 2) cross at the face's middle and are at most HALF_SQRT2 apart within
+ *   the face. (Faces of make_poly take their normals from the edge: about 1e-4 LSB.)
+ * REF_POINT  the point of the reference core under a manifold point is, per collide.c,
+ *   either the incident vertex's core point minus its separation along n (separation
+ *   rounded, 1/2; the vertex is kept only when its rounded tangential offset is >= 0, so
+ *   it is at most 1/2 beyond the face's end: sqrt(1/4 + FACE_ETA^2) from the face), or
+ *   v11 + round(2 eta) / 2 n on a side plane (FACE_ETA + 1/4); then the point itself is
+ *   rounded (HALF_SQRT2): at most 1/2 + sqrt(3/4) + HALF_SQRT2 from the face segment.
+ * INC_POINT  the point of the incident core: the vertex itself plus the point's rounding
+ *   (HALF_SQRT2), or the incident edge cut at a side plane: the cut is interpolated
+ *   between the two incident vertices' rounded (tangential, normal) coordinates, a point
+ *   of the segment between them and so within HALF_SQRT2 of the true edge, rounded by the
+ *   division (1/2), offset by round(2 eta) / 2 - eta (1/4), and the point is rounded
+ *   (HALF_SQRT2).
+ * SEPARATION_LOW  a reported separation is never below the distance by more than: the
+ *   face path, the incident vertices' separations rounded (1/2) and the cut interpolated
+ *   between them and rounded (1/2), measured from the face plane, which is within
+ *   FACE_ETA of the face's line where the closest point is; vertex to vertex, 1/2. This
+ *   needs the distance to be what collide.c measures (see the apart check in
+ *   test_random_pairs for where its tolerances make it measure less). */
+#define VERTEX_POINT_TOL (0.25 + HALF_SQRT2 + 1e-3)
+#define REF_POINT_TOL (0.5 + 0.86602540378443864676 + HALF_SQRT2 + 1e-3)
+#define INC_POINT_TOL (0.75 + 2 * HALF_SQRT2 + 1e-3)
+#define SEPARATION_LOW_TOL (1.0 + HALF_SQRT2 + 1e-3)
+
+/* Twice the separation of q's vertices from p's face i as collide.c measures it (stored
+ * normal, from the face's mean offset), exactly: Q46 x 2 (|coordinates| < 2^20 raw here). */
+static int64_t face_sep2(const pg_geom *p, int32_t i, const pg_geom *q)
+{
+    pg_dir n = p->normals[i];
+    pg_vec2 v1 = p->vertices[i], v2 = p->vertices[(i + 1) % p->count];
+    int64_t lo = INT64_MAX, off2 = (int64_t)v1.x * n.x + (int64_t)v1.y * n.y + (int64_t)v2.x * n.x + (int64_t)v2.y * n.y;
+    int32_t j;
+    for (j = 0; j < q->count; ++j) {
+        int64_t d = (int64_t)q->vertices[j].x * n.x + (int64_t)q->vertices[j].y * n.y;
+        if (d < lo) lo = d;
+    }
+    return 2 * lo - off2;
+}
+
+static int64_t best_face_sep2(const pg_geom *p, const pg_geom *q)
+{
+    int64_t best = INT64_MIN;
+    int32_t i;
+    for (i = 0; i < p->count; ++i) {
+        int64_t s = face_sep2(p, i, q);
+        if (s > best) best = s;
+    }
+    return best;
+}
+
+/* The smallest distance (LSB) from a vertex of one core to the line of an edge of the
+ * other that it passes beyond an end by at most PG__REF_TOLERANCE: pg__point_segment
+ * counts such a vertex as inside the edge, at that perpendicular distance (decided here
+ * exactly as there, with the stored normal). 1e300 if there is none. */
+static double slack_distance(const pg_geom *a, const pg_geom *b)
+{
+    double best = 1e300;
+    int pass;
+    for (pass = 0; pass < 2; ++pass) {
+        const pg_geom *p = pass ? b : a, *q = pass ? a : b;
+        int32_t i, j, edges = p->count == 2 ? 1 : p->count;
+        for (i = 0; i < edges; ++i) {
+            pg_vec2 e1 = p->vertices[i], e2 = p->vertices[(i + 1) % p->count];
+            pg_dir n = p->normals[i];
+            int64_t tx = -(int64_t)n.y, ty = n.x, slack = -((int64_t)REF_TOL << 30);
+            for (j = 0; j < q->count; ++j) {
+                pg_vec2 w = q->vertices[j];
+                int64_t lo = ((int64_t)w.x - e1.x) * tx + ((int64_t)w.y - e1.y) * ty;
+                int64_t hi = ((int64_t)e2.x - w.x) * tx + ((int64_t)e2.y - w.y) * ty;
+                if (lo >= slack && hi >= slack && (lo < 0 || hi < 0)) {
+                    double perp = fabs((double)(((int64_t)w.x - e1.x) * n.x + ((int64_t)w.y - e1.y) * n.y)) / Q30;
+                    if (perp < best) best = perp;
+                }
+            }
+        }
+    }
+    return best;
+}
+
+/* Distances (LSB) from (x, y) (raw units) to g's core features. */
+static double dist_to_vertex(const pg_geom *g, int32_t i, double x, double y)
+{
+    return hypot(x - g->vertices[i].x, y - g->vertices[i].y);
+}
+
+static double dist_to_edge(const pg_geom *g, int32_t i, double x, double y)
+{
+    int32_t k = (i + 1) % g->count;
+    return seg_dist(x, y, g->vertices[i].x, g->vertices[i].y, g->vertices[k].x, g->vertices[k].y);
+}
+
+static double dist_to_edge_line(const pg_geom *g, int32_t i, double x, double y)
+{
+    int32_t k = (i + 1) % g->count;
+    double ex = (double)g->vertices[k].x - g->vertices[i].x, ey = (double)g->vertices[k].y - g->vertices[i].y;
+    return fabs(orient2(g->vertices[i].x, g->vertices[i].y, g->vertices[k].x, g->vertices[k].y, x, y)) / hypot(ex, ey);
+}
+
+/* From a point of the incident core to the edges at vertex iv (the point is that vertex
+ * or lies on the incident edge, which runs into or out of iv). */
+static double dist_to_incident(const pg_geom *g, int32_t iv, double x, double y)
+{
+    double d1, d2;
+    if (g->count == 1) return dist_to_vertex(g, 0, x, y);
+    d1 = dist_to_edge(g, iv, x, y);
+    d2 = dist_to_edge(g, (iv + g->count - 1) % g->count, x, y);
+    return d1 < d2 ? d1 : d2;
+}
+
+/* Rounded tangential offsets (LSB) of w past the start of p's face i and before its end,
+ * along the face's stored direction, as collide.c clips with them. */
+static int64_t past_start(const pg_geom *p, int32_t i, pg_vec2 w)
+{
+    pg_dir n = p->normals[i];
+    pg_vec2 e = p->vertices[i];
+    return pg__round_shift64(((int64_t)w.x - e.x) * -(int64_t)n.y + ((int64_t)w.y - e.y) * n.x, 30);
+}
+
+static int64_t before_end(const pg_geom *p, int32_t i, pg_vec2 w)
+{
+    pg_dir n = p->normals[i];
+    pg_vec2 e = p->vertices[(i + 1) % p->count];
+    return pg__round_shift64(((int64_t)e.x - w.x) * -(int64_t)n.y + ((int64_t)e.y - w.y) * n.x, 30);
+}
+
+/* Does the edge w1 w2 miss p's face i, both ends beyond the same side plane? */
+static int misses_face(const pg_geom *p, int32_t i, pg_vec2 w1, pg_vec2 w2)
+{
+    return (past_start(p, i, w1) < 0 && past_start(p, i, w2) < 0) || (before_end(p, i, w1) < 0 && before_end(p, i, w2) < 0);
+}
+
+/* Each point of m lies midway between the two surfaces (geom.h, collide.c): collide.c
+ * places it halfway between a point of A's surface and a point of B's, which are the
+ * separation apart along the normal and are core points pushed out by the radii along n:
+ *     qa = p - (s/2 + rA) n  is a point of A's core,   qb = p + (s/2 + rB) n  of B's,
+ * at the features the id names: on the reference face (kinds 0, 1), at the incident
+ * vertex or on the incident edge cut next to it, or at the two vertices (kind 2), within
+ * the rounding derived above. (Checking instead that p is within |s|/2 of both surfaces
+ * would be wrong for a tilted capsule: collide.c takes its surface point as the core
+ * point - r n, which is inside the capsule.) One case is designed to leave the face: when
+ * the incident edge misses the face (both ends beyond one side plane; collide.c keeps
+ * "one point at its deeper vertex"), the point is over the face's LINE beyond its end. */
+static void expect_midway(const pg_geom *a, const pg_geom *b, const pg_manifold *m, int iter)
+{
+    double nx = m->normal.x / Q30, ny = m->normal.y / Q30;
+    int32_t i;
+    for (i = 0; i < m->count; ++i) {
+        const pg_manifold_point *mp = &m->points[i];
+        double s = mp->separation, ka = s / 2 + a->radius, kb = s / 2 + b->radius;
+        double q[2][2];
+        uint32_t kind = mp->id >> 16;
+        int32_t fa = (int32_t)((mp->id >> 8) & 0xFFu), fb = (int32_t)(mp->id & 0xFFu);
+        q[0][0] = mp->point.x - ka * nx;
+        q[0][1] = mp->point.y - ka * ny;
+        q[1][0] = mp->point.x + kb * nx;
+        q[1][1] = mp->point.y + kb * ny;
+        if (kind == 2) {
+            PG_EXPECT_LE(dist_to_vertex(a, fa, q[0][0], q[0][1]), VERTEX_POINT_TOL, "iter %d point %d: A's vertex %d", iter, i, fa);
+            PG_EXPECT_LE(dist_to_vertex(b, fb, q[1][0], q[1][1]), VERTEX_POINT_TOL, "iter %d point %d: B's vertex %d", iter, i, fb);
+        } else {
+            /* kind 0: A's face fa is the reference, B's vertex fb incident; kind 1 the other way */
+            const pg_geom *ref = kind == 0 ? a : b, *inc = kind == 0 ? b : a;
+            const double *qr = q[kind == 0 ? 0 : 1], *qi = q[kind == 0 ? 1 : 0];
+            int32_t f = kind == 0 ? fa : fb, iv = kind == 0 ? fb : fa, c = inc->count;
+            int miss = m->count == 1 && c >= 2 && dist_to_vertex(inc, iv, qi[0], qi[1]) <= HALF_SQRT2 + 1e-3 &&
+                       (misses_face(ref, f, inc->vertices[iv], inc->vertices[(iv + 1) % c]) ||
+                        misses_face(ref, f, inc->vertices[iv], inc->vertices[(iv + c - 1) % c]));
+            PG_EXPECT_LE(kind, 1, "iter %d point %d: id %x", iter, i, mp->id);
+            PG_EXPECT_LE(dist_to_edge_line(ref, f, qr[0], qr[1]), REF_POINT_TOL, "iter %d point %d id %x: off the reference face's line",
+                         iter, i, mp->id);
+            if (!miss)
+                PG_EXPECT_LE(dist_to_edge(ref, f, qr[0], qr[1]), REF_POINT_TOL, "iter %d point %d id %x: beyond the reference face", iter, i, mp->id);
+            PG_EXPECT_LE(dist_to_incident(inc, iv, qi[0], qi[1]), INC_POINT_TOL, "iter %d point %d id %x: off the incident feature", iter, i, mp->id);
+        }
+    }
+}
+
+/* The id of the same point with the arguments swapped: kinds 0 and 1 trade places, the
+ * two feature bytes too. */
+static uint32_t swapped_id(uint32_t id)
+{
+    uint32_t kind = id >> 16;
+    return (kind < 2 ? kind ^ 1u : kind) << 16 | (id & 0xFFu) << 8 | ((id >> 8) & 0xFFu);
+}
+
 /* Regression (random pair 6854 of test_random_pairs): a rotated box A and an octagon B,
  * apart by 354 LSB. The closest points are A's vertex 1 and the interior of B's face 6,
  * which is tilted by about 9 degrees against A's face 0. B's face separates them by
@@ -1051,8 +1256,11 @@ static void test_apart_tilted_faces(void **state)
     expect_unit(m.normal);
     for (i = 0; i < m.count; ++i)
         if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
+    /* a vertex against a face's interior, cores apart by more than PG__REF_TOLERANCE and
+     * no vertex in an edge's end band: the separation is the distance within rounding */
+    PG_EXPECT_LE(ref * 65536.0, slack_distance(&a, &b), "%s", "no vertex in an edge's end band");
     PG_EXPECT_LE(got - ref, 3.0 / 65536, "separation %.6f reference %.6f", got, ref);
-    PG_EXPECT_LE(-3e-4, got - ref, "separation %.6f reference %.6f", got, ref);
+    PG_EXPECT_LE(-SEPARATION_LOW_TOL / 65536, got - ref, "separation %.9f reference %.9f", got, ref);
     /* B's face 6 is the reference: the normal points from A to B along -n6 */
     PG_EXPECT_EQ(m.normal.x, -b.normals[6].x, "%s", "normal x");
     PG_EXPECT_EQ(m.normal.y, -b.normals[6].y, "%s", "normal y");
@@ -1061,13 +1269,84 @@ static void test_apart_tilted_faces(void **state)
     for (i = 0; i < w.count; ++i)
         if (dbl(w.points[i].separation) < got2) got2 = dbl(w.points[i].separation);
     PG_EXPECT_LE(got2 - ref, 3.0 / 65536, "swapped separation %.6f reference %.6f", got2, ref);
-    PG_EXPECT_LE(-3e-4, got2 - ref, "swapped separation %.6f reference %.6f", got2, ref);
+    PG_EXPECT_LE(-SEPARATION_LOW_TOL / 65536, got2 - ref, "swapped separation %.9f reference %.9f", got2, ref);
 }
+
+/* README, "what is left": "The narrowphase can overstate the gap of a separated
+ * capsule/segment pair near a vertex by up to ~30 LSB (5·10⁻⁴ m) in rare configurations."
+ * The configuration: pg__point_segment counts a vertex up to PG__REF_TOLERANCE (33 LSB)
+ * beyond the end of the other core's face as over that face, and collide.c then clips the
+ * incident edge at the face's side plane instead of measuring vertex to vertex. Here A
+ * runs from (0, 0) to (1, 0) and B's end w lies delta beyond A's end at height h, B leaning
+ * back over A at the tilt theta: B's edge crosses the side plane x = 1 at height
+ * h + delta tan(theta), which is what is reported, while the distance is
+ * sqrt(h^2 + delta^2). Past the band (delta > 33 LSB) the pair is vertex to vertex and
+ * the separation is the distance to 1/2 LSB (the nearest integer square root; the double
+ * reference is exact to far below that).
+ *
+ * The README's bound holds while 33 tan(theta) <= 30: tilts up to about 42 degrees, which
+ * this test covers. KNOWN LIBRARY BUG, kept out of the default run: steeper tilts
+ * overstate by up to 33 tan(theta) LSB with no limit (57 LSB at 60 degrees, 1890 at 89),
+ * and at 89.8 degrees with delta = 33 LSB the contact is lost although the gap is 0.03 m,
+ * inside the 0.1 m speculative distance. Build with -DPGT_KNOWN_BUG_VERTEX_GAP to run
+ * test_segment_vertex_gap_steep, which asserts the README's bound there and fails. */
+#define README_VERTEX_GAP_LSB 30.0
+
+static void check_vertex_gap(const double *tilts, int ntilts, double *worst)
+{
+    static const int32_t deltas[] = {0, 10, REF_TOL, REF_TOL + 1, 2 * REF_TOL};
+    static const double radii[] = {0, 0.01};
+    int t, k, r, order;
+    for (t = 0; t < ntilts; ++t)
+        for (k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k)
+            for (r = 0; r < 2; ++r) {
+                double th = tilts[t] * PGT_PI / 180.0, h = 0.03, wx = 1 + deltas[k] / 65536.0;
+                pg_geom a = make_capsule(0, 0, 1, 0, radii[r]), b = make_capsule(wx, h, wx - cos(th), h + sin(th), radii[r]);
+                double ref = core_distance(&a, &b) - dbl(a.radius) - dbl(b.radius);
+                PG_EXPECT_EQ(b.vertices[0].x, fx(1) + deltas[k], "%s", "w lies delta beyond A's end");
+                for (order = 0; order < 2; ++order) {
+                    pg_manifold m = order ? collide(&b, &a, fx(0.1)) : collide(&a, &b, fx(0.1));
+                    double got = 1e300, err;
+                    int i;
+                    PG_EXPECT_LE(1, m.count, "tilt %.1f deg, delta %d LSB, radius %.2f, order %d: no contact, gap %.6f", tilts[t],
+                                 deltas[k], radii[r], order, ref);
+                    for (i = 0; i < m.count; ++i)
+                        if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
+                    err = (got - ref) * 65536.0;
+                    if (m.count > 0 && err > *worst) *worst = err;
+                    if (deltas[k] > REF_TOL)
+                        PG_EXPECT_LE(fabs(err), 0.5 + 1e-6, "tilt %.1f deg, delta %d LSB, radius %.2f, order %d: vertex to vertex",
+                                     tilts[t], deltas[k], radii[r], order);
+                    PG_EXPECT_LE(err, README_VERTEX_GAP_LSB, "tilt %.1f deg, delta %d LSB, radius %.2f, order %d: overstated gap (LSB)",
+                                 tilts[t], deltas[k], radii[r], order);
+                }
+            }
+}
+
+static void test_segment_vertex_gap(void **state)
+{
+    static const double tilts[] = {10, 20, 30, 40};
+    double worst = 0;
+    (void)state;
+    check_vertex_gap(tilts, 4, &worst);
+    print_message("segment vertex gap: worst overstatement %.2f LSB (README: up to ~30)\n", worst);
+}
+
+#ifdef PGT_KNOWN_BUG_VERTEX_GAP
+static void test_segment_vertex_gap_steep(void **state)
+{
+    static const double tilts[] = {45, 60, 80, 89, 89.8};
+    double worst = 0;
+    (void)state;
+    check_vertex_gap(tilts, 5, &worst);
+    print_message("segment vertex gap, steep: worst overstatement %.2f LSB\n", worst);
+}
+#endif
 
 static void test_random_pairs(void **state)
 {
     pgt_rng rng = pgt_rng_seed(2024);
-    int iter, checked = 0, touching = 0;
+    int iter, checked = 0, touching = 0, tolerant = 0, exact_swaps = 0;
     double worst_apart = 0, worst_deep = 0;
     (void)state;
     for (iter = 0; iter < 30000; ++iter) {
@@ -1080,7 +1359,15 @@ static void test_random_pairs(void **state)
         pg_fix spec = fx(0.1);
         pg_manifold m = collide(&a, &b, spec), w;
         double radii = dbl(a.radius) + dbl(b.radius), d = core_distance(&a, &b), ref, got = 1e300;
+        /* collide.c's own quantities, only to tell which of its tolerances can act: two
+         * polygons (segments and capsules included) have SAT face separations, and the
+         * reference is the better face outright ("far") once the better one exceeds
+         * PG__REF_TOLERANCE */
+        int poly_pair = a.count >= 2 && b.count >= 2, far;
+        int64_t sa2 = poly_pair ? best_face_sep2(&a, &b) : 0, sb2 = poly_pair ? best_face_sep2(&b, &a) : 0;
+        double sat = (double)(sa2 > sb2 ? sa2 : sb2) / 2147483648.0 / 65536.0; /* m */
         int i;
+        far = poly_pair && (sa2 > sb2 ? sa2 : sb2) > ((int64_t)REF_TOL << 31);
         ref = d > 0 ? d - radii : sat_depth(&a, &b) - radii;
         if (ref > 0.1 + 1e-4) {
             PG_EXPECT_EQ(m.count, 0, "iter %d: reference separation %.6f", iter, ref);
@@ -1093,12 +1380,23 @@ static void test_random_pairs(void **state)
         for (i = 0; i < m.count; ++i)
             if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
         if (d > 0) {
-            /* apart: the separation is the distance (a face normal may see a little less
-             * near a vertex region's border) */
-            double err = got - ref;
+            /* apart: the separation is the distance, at most SEPARATION_LOW_TOL below it
+             * (rounding, derived above), unless one of collide.c's two tolerances can act:
+             * cores within PG__REF_TOLERANCE keep A's face while B's is better by up to
+             * that, and a vertex up to PG__REF_TOLERANCE beyond an edge's end counts its
+             * distance to the edge's line (shorter than the distance). Then the separation
+             * is still at least the reference face's, less 1 (two roundings; vertex to
+             * vertex: the distance - 1/2 >= sat - FACE_ETA - 1/2), and the reference face
+             * separates by sat, or by sat - PG__REF_TOLERANCE when not far. */
+            double err = got - ref, low = ref;
+            if (poly_pair && (!far || slack_distance(&a, &b) < d * 65536.0)) {
+                low = sat - (far ? 0 : REF_TOL / 65536.0) - radii;
+                ++tolerant;
+            }
             if (fabs(err) > worst_apart) worst_apart = fabs(err);
-            if (err > 3.0 / 65536 || err < -3e-4) {
-                print_error("iter %d: apart, separation %.6f reference %.6f (counts %d %d)\n", iter, got, ref, a.count, b.count);
+            if (err > 3.0 / 65536 || got < low - SEPARATION_LOW_TOL / 65536) {
+                print_error("iter %d: apart, separation %.9f reference %.9f lower bound %.9f (counts %d %d)\n", iter, got, ref, low,
+                            a.count, b.count);
                 fail();
             }
         } else {
@@ -1111,7 +1409,7 @@ static void test_random_pairs(void **state)
                 fail();
             }
         }
-        /* points lie near both surfaces: midway, so within |separation|/2 + rounding of each */
+        expect_midway(&a, &b, &m, iter);
         /* exact mirror symmetry */
         {
             pg_geom ma = mirror(&a), mb = mirror(&b);
@@ -1135,18 +1433,42 @@ static void test_random_pairs(void **state)
                 PG_EXPECT_EQ(w.points[i].id, m.points[i].id, "translate iter %d", iter);
             }
         }
-        /* swapped arguments: about the same depth, normal roughly reversed */
+        /* swapped arguments. collide.c's choices do not depend on the order when a
+         * circle is involved, or when the cores are apart by more than PG__REF_TOLERANCE
+         * on the better face axis and the two faces do not tie ("A on ties"): the same
+         * reference face and incident edge, the same arithmetic, the normal reported
+         * negated and the ids naming A and B the other way round. Exactly, but for the
+         * midpoint of two vertices (kind 2): va + round((vb - va + k n) / 2) and
+         * vb + round((va - vb + k n) / 2) differ by 1 LSB in a component where the half
+         * is a tie (rounding ties away from zero is not translation invariant). Otherwise
+         * A's face stays the reference while B's is better by up to PG__REF_TOLERANCE:
+         * the depths differ by up to that plus rounding. */
         {
             double got2 = 1e300;
             w = collide(&b, &a, spec);
             PG_EXPECT_LE(1, w.count, "swap iter %d", iter);
-            for (i = 0; i < w.count; ++i)
-                if (dbl(w.points[i].separation) < got2) got2 = dbl(w.points[i].separation);
-            PG_EXPECT_LE(fabs(got2 - got), d > 0 ? 2e-3 : 40.0 / 65536, "swap iter %d", iter);
+            if (!poly_pair || (far && sa2 != sb2)) {
+                ++exact_swaps;
+                PG_EXPECT_EQ(w.count, m.count, "swap iter %d", iter);
+                PG_EXPECT_EQ(w.normal.x, -m.normal.x, "swap iter %d", iter);
+                PG_EXPECT_EQ(w.normal.y, -m.normal.y, "swap iter %d", iter);
+                for (i = 0; i < m.count && i < w.count; ++i) {
+                    int tol = m.points[i].id >> 16 == 2 ? 1 : 0;
+                    PG_EXPECT_EQ(w.points[i].id, swapped_id(m.points[i].id), "swap iter %d point %d", iter, i);
+                    PG_EXPECT_EQ(w.points[i].separation, m.points[i].separation, "swap iter %d point %d", iter, i);
+                    PG_EXPECT_LE(abs(w.points[i].point.x - m.points[i].point.x), tol, "swap iter %d point %d", iter, i);
+                    PG_EXPECT_LE(abs(w.points[i].point.y - m.points[i].point.y), tol, "swap iter %d point %d", iter, i);
+                }
+            } else {
+                for (i = 0; i < w.count; ++i)
+                    if (dbl(w.points[i].separation) < got2) got2 = dbl(w.points[i].separation);
+                PG_EXPECT_LE(fabs(got2 - got), 40.0 / 65536, "swap iter %d", iter);
+            }
         }
     }
-    print_message("random pairs: %d with contacts (%d overlapping); worst |error| apart %.3g m, overlapping %.3g m\n", checked,
-                  touching, worst_apart, worst_deep);
+    print_message("random pairs: %d with contacts (%d overlapping, %d apart where a tolerance can act, %d swapped exactly); "
+                  "worst |error| apart %.3g m, overlapping %.3g m\n",
+                  checked, touching, tolerant, exact_swaps, worst_apart, worst_deep);
 }
 
 int main(void)
@@ -1174,6 +1496,10 @@ int main(void)
         cmocka_unit_test(test_transform),
         cmocka_unit_test(test_far_from_origin),
         cmocka_unit_test(test_apart_tilted_faces),
+        cmocka_unit_test(test_segment_vertex_gap),
+#ifdef PGT_KNOWN_BUG_VERTEX_GAP
+        cmocka_unit_test(test_segment_vertex_gap_steep),
+#endif
         cmocka_unit_test(test_random_pairs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
