@@ -9,10 +9,11 @@
  * HOW TO USE IT
  *     pg_world_def wd = pg_default_world_def();          // gravity, 60 Hz, 4 substeps, ...
  *     wd.max_bodies = 256;                               // capacities are fixed at creation
- *     static uint64_t memory[1 << 16];                   // the caller owns all memory
- *     size_t need = pg_world_memory_size(&wd);           // check it fits
- *     pg_world *world;
- *     pg_world_create(&wd, memory, sizeof memory, &world);
+ *     wd.max_shapes = 256;
+ *     wd.max_contacts = 512;
+ *     static uint64_t memory[1 << 17];                   // the caller owns all memory:
+ *     pg_world *world;                                   // pg_world_memory_size(&wd) bytes
+ *     if (pg_world_create(&wd, memory, sizeof memory, &world) != PG_OK) return 1;
  *
  *     pg_body_def bd = pg_default_body_def();            // a static ground
  *     pg_shape_def sd = pg_default_shape_def();
@@ -27,7 +28,8 @@
  * CONVENTIONS
  *   - Every function that can fail returns pg_result; PG_OK is 0. pg_result_message()
  *     explains a code and pg_world_last_error() gives the detail of the world's last
- *     failure ("density 0.01 is below the envelope minimum 0.1", ...). A failing call
+ *     failure ("PG_ERR_ENVELOPE: density 0.01 kg/m^2 is outside 0.1..100 for a dynamic
+ *     body", ...). A failing call
  *     leaves the world unchanged.
  *   - Handles (pg_body_id, pg_shape_id) hold an index and a generation: a handle to a
  *     destroyed object is detected (PG_ERR_STALE_HANDLE), never dereferenced. The zero
@@ -43,7 +45,9 @@
  *   forces and torques accumulate in int64 Q48.16 within a step.
  *
  * THE ENVELOPE (checked at creation; see README "Envelope")
- *   shape sizes 0.05 .. 50 m (radius, half extents, edge lengths >= 0.025 m),
+ *   radius, half extent or circumradius 0.025 .. 50 m; polygon edges >= 0.005 m and
+ *   vertices within 50 m of the body origin; a rotating dynamic body's inertia
+ *   3.0e-8 .. 1.3e8 kg m^2 and radius of gyration >= 2^-8 m (its inverses' formats);
  *   density 0.1 .. 100 kg/m^2 (0 allowed on static bodies), friction 0 .. 10,
  *   restitution 0 .. 1, positions within +-1000 m, speeds up to max_linear_speed
  *   (default 400 m/s, a cap that is counted in pg_world_stats.speed_clamps).
@@ -72,7 +76,9 @@ typedef enum pg_result {
     PG_ERR_MEMORY,           /* the memory block given is too small */
     PG_ERR_ENVELOPE,         /* a value is outside the documented envelope */
     PG_ERR_DEGENERATE,       /* geometry with no area or length, or collinear points */
-    PG_ERR_NOT_CONVEX,       /* polygon vertices not convex or not counter-clockwise */
+    PG_ERR_NOT_CONVEX,       /* polygon vertices not convex (pg_geometry_polygon accepts
+                                either winding; a geometry filled in by hand must be
+                                counter-clockwise) */
     PG_ERR_BODY_TYPE,        /* the operation does not apply to this body type */
     PG_ERR_NOT_FOUND,        /* a query found nothing (e.g. no free position) */
     PG_RESULT_COUNT
