@@ -26,27 +26,58 @@ static int in_position_envelope(pg_vec2 p)
     return p.x >= -PG_ENV_MAX_POSITION && p.x <= PG_ENV_MAX_POSITION && p.y >= -PG_ENV_MAX_POSITION && p.y <= PG_ENV_MAX_POSITION;
 }
 
-static int64_t speed_squared(pg_vec2 v) { return (int64_t)v.x * v.x + (int64_t)v.y * v.y; }
+/* |v|^2 in Q32, unsigned: for any two int32 components (INT32_MIN too) it is at most
+ * 2^63, which a signed sum would overflow. */
+static uint64_t speed_squared(pg_vec2 v)
+{
+    return pg__mag64(v.x) * pg__mag64(v.x) + pg__mag64(v.y) * pg__mag64(v.y);
+}
+
+/* |v| in Q16.16, rounded up, as int64 (up to 2^31.5: it need not fit pg_fix). */
+static int64_t speed_ceil(pg_vec2 v)
+{
+    uint64_t ss = speed_squared(v), r = pg_isqrt64(ss);
+    return (int64_t)(r * r < ss ? r + 1u : r);
+}
 
 static pg_result check_speed(const pg_world *world, pg_vec2 v)
 {
-    int64_t cap = world->def.max_linear_speed;
-    if (speed_squared(v) > cap * cap)
-        return pg__fail_value(world, PG_ERR_ENVELOPE, "linear velocity: speed", pg_v2_length(v), "m/s exceeds the world's max_linear_speed");
+    uint64_t cap = (uint64_t)world->def.max_linear_speed;
+    if (speed_squared(v) > cap * cap) {
+        int64_t len = speed_ceil(v);
+        return pg__fail_limit(world, PG_ERR_ENVELOPE, "linear velocity: speed", len > PG_FIX_MAX ? PG_FIX_MAX : (pg_fix)len,
+                              "m/s exceeds the world's max_linear_speed", (pg_fix)cap, "m/s");
+    }
     return PG_OK;
 }
 
 /* The speed cap acts on the magnitude: a faster velocity is scaled down to the cap,
- * keeping its direction, and the event is counted in stats.speed_clamps. */
+ * keeping its direction, and the event is counted in stats.speed_clamps. Each component
+ * becomes v cap / |v| with |v| rounded up and the quotient rounded toward zero (the
+ * rounding rule for this one place, symmetric in sign): the result never exceeds the
+ * cap, so a clamped velocity can be set again, saved in a scene file and read back. */
 pg_vec2 pg__clamp_speed_slow(pg_world *world, pg_vec2 v)
 {
-    int64_t cap = world->def.max_linear_speed, len;
+    uint64_t cap = (uint64_t)world->def.max_linear_speed, len;
     if (speed_squared(v) <= cap * cap) return v;
     world->stats.speed_clamps += 1u;
-    len = pg_v2_length(v);
-    if (len <= 0) return v;
-    return pg_v2(pg_fix_from_ratio((int64_t)v.x * cap, len << 16), pg_fix_from_ratio((int64_t)v.y * cap, len << 16));
+    len = (uint64_t)speed_ceil(v); /* > cap >= 1 */
+    /* |v.x| cap < 2^31 2^28: no overflow; the quotient is at most cap */
+    return pg_v2((pg_fix)(v.x < 0 ? -(int64_t)(pg__mag64(v.x) * cap / len) : (int64_t)(pg__mag64(v.x) * cap / len)),
+                 (pg_fix)(v.y < 0 ? -(int64_t)(pg__mag64(v.y) * cap / len) : (int64_t)(pg__mag64(v.y) * cap / len)));
 }
+
+static int damping_ok(pg_fix c) { return c >= 0 && c <= PG_FIX_C(1000); }
+
+static pg_result check_damping(const pg_world *world, pg_fix linear, pg_fix angular)
+{
+    if (!damping_ok(linear)) return pg__fail_value(world, PG_ERR_ENVELOPE, "linear damping", linear, "per second is outside 0..1000");
+    if (!damping_ok(angular)) return pg__fail_value(world, PG_ERR_ENVELOPE, "angular damping", angular, "per second is outside 0..1000");
+    return PG_OK;
+}
+
+/* The first component of p outside +-1000 m, for the message. */
+static pg_fix outside_component(pg_vec2 p) { return p.x < -PG_ENV_MAX_POSITION || p.x > PG_ENV_MAX_POSITION ? p.x : p.y; }
 
 static pg_result check_body_def(const pg_world *world, const pg_body_def *d)
 {
@@ -54,13 +85,15 @@ static pg_result check_body_def(const pg_world *world, const pg_body_def *d)
     if (d->type != PG_BODY_STATIC && d->type != PG_BODY_KINEMATIC && d->type != PG_BODY_DYNAMIC)
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
     if (!in_position_envelope(d->position))
-        return pg__fail_value(world, PG_ERR_ENVELOPE, "position component", d->position.x < -PG_ENV_MAX_POSITION || d->position.x > PG_ENV_MAX_POSITION ? d->position.x : d->position.y, "m is outside +-1000 m");
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "position component", outside_component(d->position), "m is outside +-1000 m");
+    if (d->type == PG_BODY_STATIC && (d->linear_velocity.x != 0 || d->linear_velocity.y != 0 || d->angular_velocity != 0))
+        return pg__fail(world, PG_ERR_BODY_TYPE, "a static body cannot move: its linear_velocity and angular_velocity must be 0 (use a kinematic body)");
     r = check_speed(world, d->linear_velocity);
     if (r != PG_OK) return r;
     if (d->angular_velocity < -PG_FIX_C(1000) || d->angular_velocity > PG_FIX_C(1000))
         return pg__fail_value(world, PG_ERR_ENVELOPE, "angular_velocity", d->angular_velocity, "rad/s is outside +-1000 rad/s");
-    if (d->linear_damping < 0 || d->linear_damping > PG_FIX_C(1000) || d->angular_damping < 0 || d->angular_damping > PG_FIX_C(1000))
-        return pg__fail(world, PG_ERR_ENVELOPE, "damping must be 0..1000 per second");
+    r = check_damping(world, d->linear_damping, d->angular_damping);
+    if (r != PG_OK) return r;
     if (d->gravity_scale < -PG_FIX_C(100) || d->gravity_scale > PG_FIX_C(100))
         return pg__fail_value(world, PG_ERR_ENVELOPE, "gravity_scale", d->gravity_scale, "is outside -100..100");
     return PG_OK;
@@ -72,7 +105,8 @@ pg_result pg_body_create(pg_world *world, const pg_body_def *def, pg_body_id *ou
     pg_body *b;
     pg_result r;
     if (out != NULL) out->index = 0, out->generation = 0;
-    if (world == NULL || def == NULL || out == NULL) return PG_ERR_NULL;
+    if (world == NULL) return PG_ERR_NULL;
+    if (def == NULL || out == NULL) return pg__fail(world, PG_ERR_NULL, def == NULL ? "pg_body_create: def is NULL" : "pg_body_create: out is NULL");
     r = check_body_def(world, def);
     if (r != PG_OK) return r;
     /* The lowest free slot: the pool's state is then just "which slots are used",
@@ -343,7 +377,7 @@ uint32_t pg_body_shapes(const pg_world *w, pg_body_id id, pg_shape_id *out, uint
 pg_result pg_body_set_transform(pg_world *world, pg_body_id id, pg_vec2 position, pg_angle angle)
 {
     GET_BODY("pg_body_set_transform: body handle is stale or invalid");
-    if (!in_position_envelope(position)) return pg__fail(world, PG_ERR_ENVELOPE, "position is outside +-1000 m");
+    if (!in_position_envelope(position)) return pg__fail_value(world, PG_ERR_ENVELOPE, "position component", outside_component(position), "m is outside +-1000 m");
     b->origin = position;
     b->angle = angle;
     b->rot = pg_rot_from_angle(angle);
@@ -383,7 +417,15 @@ pg_result pg_body_set_type(pg_world *world, pg_body_id id, pg_body_type type)
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
     if (b->type == type) return PG_OK;
     if (type == PG_BODY_DYNAMIC) {
-        const char *why = pg__body_mass_problem(world, id.index, 0, PG_NULL_INDEX, NULL, 0, (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0);
+        const char *why;
+        uint32_t s;
+        for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
+            pg_fix d = world->shapes[s].density;
+            if (d < PG_ENV_MIN_DENSITY || d > PG_ENV_MAX_DENSITY)
+                return pg__fail_value(world, PG_ERR_ENVELOPE, "a shape's density", d,
+                                      "kg/m^2 is outside 0.1..100 for a dynamic body: set it first (pg_body_set_density)");
+        }
+        why = pg__body_mass_problem(world, id.index, 0, PG_NULL_INDEX, NULL, 0, (b->flags & PG_BODY_FLAG_FIXED_ROTATION) == 0);
         if (why != NULL) return pg__fail(world, PG_ERR_ENVELOPE, why);
     }
     pg__remove_body_contacts(world, id.index); /* pairs are found again next step */
@@ -422,9 +464,10 @@ pg_result pg_body_set_gravity_scale(pg_world *world, pg_body_id id, pg_fix scale
 
 pg_result pg_body_set_damping(pg_world *world, pg_body_id id, pg_fix linear, pg_fix angular)
 {
+    pg_result r;
     GET_BODY("pg_body_set_damping: body handle is stale or invalid");
-    if (linear < 0 || linear > PG_FIX_C(1000) || angular < 0 || angular > PG_FIX_C(1000))
-        return pg__fail(world, PG_ERR_ENVELOPE, "damping must be 0..1000 per second");
+    r = check_damping(world, linear, angular);
+    if (r != PG_OK) return r;
     b->linear_damping = linear;
     b->angular_damping = angular;
     return PG_OK;
@@ -522,11 +565,25 @@ pg_result pg_body_apply_force(pg_world *world, pg_body_id id, pg_vec2 force)
     return PG_OK;
 }
 
-/* (point - centre) x v, Q16.16 result in int64: |r| < 2^27, |v| < 2^31. */
+/* (point - centre) x v, Q16.16 result in int64. The point is inside the envelope, and so
+ * is the centre of a body that did not fly out of it: |r| < 2^28, |v| <= 2^31, and the
+ * difference of the two products is below 2^60. A body may fly out to the saturated
+ * edge (+-32768 m); then |r| reaches 2^32 and each product is rounded on its own by the
+ * 128-bit multiply (the result, far beyond any torque limit, is clamped by the caller). */
 static int64_t moment_about_center(const pg_body *b, pg_vec2 point, pg_vec2 v)
 {
     int64_t rx = (int64_t)point.x - b->center.x, ry = (int64_t)point.y - b->center.y;
-    return pg__round_shift64(rx * v.y - ry * v.x, 16);
+    if (rx < (INT64_C(1) << 28) && rx > -(INT64_C(1) << 28) && ry < (INT64_C(1) << 28) && ry > -(INT64_C(1) << 28))
+        return pg__round_shift64(rx * v.y - ry * v.x, 16);
+    return pg__mul64_shr(rx, v.y, 16) - pg__mul64_shr(ry, v.x, 16); /* each below 2^48 */
+}
+
+/* a + b for an int32 a and a b that pg__mul64_shr may have saturated to +-INT64_MAX */
+static int64_t add_to_fix(pg_fix a, int64_t b)
+{
+    if (b > INT64_MAX - (INT64_C(1) << 31)) return INT64_MAX - (INT64_C(1) << 31);
+    if (b < -INT64_MAX + (INT64_C(1) << 31)) return -INT64_MAX + (INT64_C(1) << 31);
+    return (int64_t)a + b;
 }
 
 /* w += invI * angular_impulse, within the +-1000 rad/s envelope; no-op for fixed rotation. */
@@ -534,7 +591,7 @@ static void add_angular_impulse(pg_body *b, int64_t impulse)
 {
     int64_t w;
     if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return;
-    w = (int64_t)b->w + pg__mul64_shr(impulse, b->inv_inertia, 38);
+    w = add_to_fix(b->w, pg__mul64_shr(impulse, b->inv_inertia, 38));
     b->w = (pg_fix)(w > PG_FIX_C(1000) ? PG_FIX_C(1000) : w < -PG_FIX_C(1000) ? -PG_FIX_C(1000) : w);
 }
 
@@ -569,8 +626,8 @@ pg_result pg_body_apply_linear_impulse(pg_world *world, pg_body_id id, pg_vec2 i
     pg_result r = dynamic_body(world, id, "pg_body_apply_linear_impulse: body handle is stale or invalid", &b);
     if (r != PG_OK) return r;
     if (!in_position_envelope(point)) return pg__fail(world, PG_ERR_ENVELOPE, "point is outside +-1000 m");
-    b->v = pg__clamp_speed(world, pg_v2(pg__sat64((int64_t)b->v.x + pg__mul64_shr(impulse.x, b->inv_mass, 38)),
-                                        pg__sat64((int64_t)b->v.y + pg__mul64_shr(impulse.y, b->inv_mass, 38))));
+    b->v = pg__clamp_speed(world, pg_v2(pg__sat64(add_to_fix(b->v.x, pg__mul64_shr(impulse.x, b->inv_mass, 38))),
+                                        pg__sat64(add_to_fix(b->v.y, pg__mul64_shr(impulse.y, b->inv_mass, 38)))));
     add_angular_impulse(b, moment_about_center(b, point, impulse));
     pg__wake_body(world, id.index);
     return PG_OK;

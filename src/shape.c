@@ -188,11 +188,21 @@ static pg_result check_shape_def(const pg_world *world, const pg_body *b, const 
     return PG_OK;
 }
 
+/* What pg__validate_geometry's result means for a geometry the caller filled in. */
 static pg_result check_geometry(const pg_world *world, const pg_geometry *g)
 {
     pg_result r = pg__validate_geometry(g);
-    if (r != PG_OK) return pg__fail(world, r, "geometry is invalid: build it with the pg_geometry_* functions and check their result");
-    return PG_OK;
+    switch (r) {
+    case PG_OK: return PG_OK;
+    case PG_ERR_NOT_CONVEX:
+        return pg__fail(world, r, "polygon vertices must be convex and counter-clockwise (pg_geometry_polygon puts clockwise ones in order)");
+    case PG_ERR_DEGENERATE:
+        return pg__fail(world, r, "geometry is degenerate: zero or negative radius, zero area, collinear vertices or an edge under 0.005 m");
+    case PG_ERR_ENVELOPE:
+        return pg__fail(world, r, "geometry is outside the envelope: radius and half extents 0.025..50 m, vertices within 50 m of the body origin");
+    default:
+        return pg__fail(world, r, "geometry kind, count or radius do not match: circle 1 vertex, segment 2 and radius 0, capsule 2, polygon 3..8 and radius 0 (use the pg_geometry_* functions)");
+    }
 }
 
 pg_result pg__validate_geometry(const pg_geometry *g)
@@ -211,7 +221,11 @@ pg_result pg__validate_geometry(const pg_geometry *g)
         break;
     case PG_SHAPE_POLYGON:
         r = g->radius == 0 ? pg_geometry_polygon(g->vertices, g->count, &copy) : PG_ERR_INVALID_ARGUMENT;
-        if (r == PG_OK && copy.vertices[0].x != g->vertices[0].x) r = PG_ERR_NOT_CONVEX; /* must already be CCW */
+        if (r == PG_OK) { /* must already be counter-clockwise: pg_geometry_polygon reverses a clockwise one */
+            int32_t i;
+            for (i = 0; i < g->count; ++i)
+                if (copy.vertices[i].x != g->vertices[i].x || copy.vertices[i].y != g->vertices[i].y) r = PG_ERR_NOT_CONVEX;
+        }
         break;
     default:
         r = PG_ERR_INVALID_ARGUMENT;
@@ -228,7 +242,9 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     pg_result r;
     const char *why;
     if (out != NULL) out->index = 0, out->generation = 0;
-    if (world == NULL || def == NULL || geometry == NULL || out == NULL) return PG_ERR_NULL;
+    if (world == NULL) return PG_ERR_NULL;
+    if (def == NULL || geometry == NULL || out == NULL)
+        return pg__fail(world, PG_ERR_NULL, def == NULL ? "pg_shape_create: def is NULL" : geometry == NULL ? "pg_shape_create: geometry is NULL" : "pg_shape_create: out is NULL");
     if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_shape_create: body handle is stale or invalid");
     r = check_shape_def(world, b, def);
     if (r != PG_OK) return r;
@@ -253,6 +269,10 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     s->body = body.index;
     s->next = PG_NULL_INDEX;
     s->geometry = *geometry;
+    {
+        int32_t k; /* unused vertex slots are not state: stored as zero */
+        for (k = geometry->count; k < PG_MAX_POLYGON_VERTICES; ++k) s->geometry.vertices[k] = pg_v2_zero();
+    }
     pg__shape_build_local(geometry, &s->local);
     s->density = def->density;
     s->friction = def->friction;
@@ -314,7 +334,8 @@ pg_body_id pg_shape_body(const pg_world *world, pg_shape_id id)
 pg_result pg_shape_geometry(const pg_world *world, pg_shape_id id, pg_geometry *out)
 {
     const pg_shape *s = pg__shape(world, id);
-    if (world == NULL || out == NULL) return PG_ERR_NULL;
+    if (world == NULL) return PG_ERR_NULL;
+    if (out == NULL) return pg__fail(world, PG_ERR_NULL, "pg_shape_geometry: out is NULL");
     if (s == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_shape_geometry: shape handle is stale or invalid");
     *out = s->geometry;
     return PG_OK;
@@ -328,7 +349,9 @@ static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_de
     pg_result r;
     const char *why;
     int i;
-    if (w == NULL || bd == NULL || sd == NULL || out == NULL) return PG_ERR_NULL;
+    if (w == NULL) return PG_ERR_NULL;
+    if (bd == NULL || sd == NULL || out == NULL)
+        return pg__fail(w, PG_ERR_NULL, bd == NULL ? "pg_make_*: body def is NULL" : sd == NULL ? "pg_make_*: shape def is NULL" : "pg_make_*: out is NULL");
     out->index = 0;
     out->generation = 0;
     if (w->body_count >= w->def.max_bodies) return pg__fail(w, PG_ERR_CAPACITY, "max_bodies reached");
@@ -418,9 +441,12 @@ pg_result pg_make_wall(pg_world *w, const pg_body_def *bd, const pg_shape_def *s
     pg_body_def def;
     pg_geometry g;
     pg_result r;
-    if (bd == NULL) return PG_ERR_NULL;
+    if (w == NULL) return PG_ERR_NULL;
+    if (bd == NULL) return pg__fail(w, PG_ERR_NULL, "pg_make_wall: body def is NULL");
     def = *bd;
-    def.type = PG_BODY_STATIC;
+    def.type = PG_BODY_STATIC; /* whatever bd says: a wall does not move */
+    def.linear_velocity = pg_v2_zero();
+    def.angular_velocity = 0;
     r = pg_geometry_box(width / 2, height / 2, pg_v2_zero(), 0, &g);
     if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "wall sides must be 0.05..100 m");
     return make_body(w, &def, sd, &g, 1, out);

@@ -51,7 +51,7 @@ pg_result pg__fail(const pg_world *world, pg_result r, const char *detail)
 
 pg_result pg__fail_value(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *bound)
 {
-    char buf[96], num[PG_FIX_FORMAT_MAX];
+    char buf[144], num[PG_FIX_FORMAT_MAX];
     size_t pos = 0;
     pg_fix_format(value, num, sizeof num);
     buf[0] = '\0';
@@ -61,6 +61,21 @@ pg_result pg__fail_value(const pg_world *world, pg_result r, const char *what, p
     copy_text(buf, sizeof buf, &pos, " ");
     copy_text(buf, sizeof buf, &pos, bound);
     return pg__fail(world, r, buf);
+}
+
+pg_result pg__fail_limit(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *relation, pg_fix limit,
+                         const char *unit)
+{
+    char buf[144], num[PG_FIX_FORMAT_MAX];
+    size_t pos = 0;
+    pg_fix_format(limit, num, sizeof num);
+    buf[0] = '\0';
+    copy_text(buf, sizeof buf, &pos, relation);
+    copy_text(buf, sizeof buf, &pos, " ");
+    copy_text(buf, sizeof buf, &pos, num);
+    copy_text(buf, sizeof buf, &pos, " ");
+    copy_text(buf, sizeof buf, &pos, unit);
+    return pg__fail_value(world, r, what, value, buf);
 }
 
 const char *pg_world_last_error(const pg_world *world) { return world != NULL ? world->last_error : ""; }
@@ -255,7 +270,9 @@ pg_result pg_world_set_gravity(pg_world *world, pg_vec2 gravity)
     if (world == NULL) return PG_ERR_NULL;
     d = world->def;
     d.gravity = gravity;
-    if (check_def(&d) != NULL) return pg__fail(world, PG_ERR_ENVELOPE, "gravity components must be within +-1000 m/s^2");
+    if (check_def(&d) != NULL)
+        return pg__fail_value(world, PG_ERR_ENVELOPE, "gravity component", gravity.x < -PG_FIX_C(1000) || gravity.x > PG_FIX_C(1000) ? gravity.x : gravity.y,
+                              "m/s^2 is outside +-1000");
     world->def.gravity = gravity;
     return PG_OK;
 }

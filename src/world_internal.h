@@ -125,6 +125,11 @@ struct pg_world {
 /* world.c */
 pg_result pg__fail(const pg_world *world, pg_result r, const char *detail);
 pg_result pg__fail_value(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *bound);
+/* "what VALUE relation LIMIT unit", e.g. "speed 565.6854 m/s exceeds the world's
+ * max_linear_speed 400 m/s" from ("speed", v, "m/s exceeds the world's max_linear_speed",
+ * cap, "m/s") */
+pg_result pg__fail_limit(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *relation, pg_fix limit,
+                         const char *unit);
 pg_body *pg__body(const pg_world *world, pg_body_id id); /* NULL if stale */
 pg_shape *pg__shape(const pg_world *world, pg_shape_id id);
 void pg__push_end_event(pg_world *world, const pg_contact *c);
@@ -158,7 +163,8 @@ pg_vec2 pg__clamp_speed_slow(pg_world *world, pg_vec2 v);
 static inline pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v)
 {
     int64_t cap = world->def.max_linear_speed;
-    if ((int64_t)v.x * v.x + (int64_t)v.y * v.y <= cap * cap) return v;
+    /* each square is at most 2^62; their sum (2^63 for INT32_MIN twice) fits unsigned */
+    if ((uint64_t)((int64_t)v.x * v.x) + (uint64_t)((int64_t)v.y * v.y) <= (uint64_t)(cap * cap)) return v;
     return pg__clamp_speed_slow(world, v);
 }
 
