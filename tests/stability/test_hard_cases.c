@@ -214,6 +214,7 @@ typedef struct pair_run {
     double max_speed_after_1s;      /* m/s, both boxes, steps 60..end */
     double bottom_y, top_y;
     double min_gap;                 /* smallest (top centre y - bottom centre y), all steps */
+    double settled_min_gap;         /* the same over the last second */
 } pair_run;
 
 static pair_run run_pair(double bottom_density, double top_density, uint32_t effects, int steps)
@@ -226,6 +227,7 @@ static pair_run run_pair(double bottom_density, double top_density, uint32_t eff
     int i;
     memset(&r, 0, sizeof r);
     r.min_gap = 1e9;
+    r.settled_min_gap = 1e9;
     make_ground(t.w);
     bd = dynamic_at(0, 0.5);
     bd.allow_sleep = 1;
@@ -242,6 +244,8 @@ static pair_run run_pair(double bottom_density, double top_density, uint32_t eff
         if (tilt > r.max_tilt) r.max_tilt = tilt;
         if (fd(pg_body_position(t.w, hi).y) - fd(pg_body_position(t.w, lo).y) < r.min_gap)
             r.min_gap = fd(pg_body_position(t.w, hi).y) - fd(pg_body_position(t.w, lo).y);
+        if (i > steps - 60 && fd(pg_body_position(t.w, hi).y) - fd(pg_body_position(t.w, lo).y) < r.settled_min_gap)
+            r.settled_min_gap = fd(pg_body_position(t.w, hi).y) - fd(pg_body_position(t.w, lo).y);
         if (i >= 60) {
             double s = speed(t.w, lo) > speed(t.w, hi) ? speed(t.w, lo) : speed(t.w, hi);
             if (s > r.max_speed_after_1s) r.max_speed_after_1s = s;
@@ -281,13 +285,20 @@ static void test_mass_ratio_100_light_on_heavy(void **state) { (void)state; expe
 
 /* 1:1000 (density 100 over 0.1, and the other way round): nothing explodes, every speed
  * stays under 1 m/s after the first second. */
-/* 1:1000, and the top box does not sink through the bottom one. A soft contact's
- * steady overlap is about (heavy mass / light mass) g / omega^2 per contact: with the
- * stiffer softness pogon gives pairs 4:1 and beyond (60 Hz, omega = 377 /s) that is
- * 1000 * 9.8 / 377^2 = 0.069 m for each of the two contacts the light box carries the
- * load through, 0.14 m in all. The bound, a quarter of the box, keeps that model's
- * prediction with margin and fails for any pass-through (measured 0.145 m; before the
- * stiffer softness the heavy box passed through). */
+/* 1:1000, and the top box does not sink through the bottom one. A soft contact's two
+ * points under a load F overlap by F K / (2 omega^2), K the effective inverse mass of a
+ * point's row (test_stacking derives it): for the light 1 m box under the heavy one,
+ * K = 1/m + 1.5/m (+ the heavy box's 1/1000 of that), and with the stiffer softness pogon
+ * gives pairs 4:1 and beyond (60 Hz, omega = 377 /s) the heavy box's 1000 m g makes
+ * 1000 * 10 * 2.5 / (2 * 377^2) = 0.088 m between the boxes (the light box's contact with
+ * the ground carries the same load into the ground, which the distance between the
+ * centres does not see). Asserted:
+ *   - at rest (the last second of the 10 s), the boxes overlap by at most 0.1 m, a tenth
+ *     of their size (docs/hard-cases.md; measured 0.088 m, as the model says);
+ *   - while they settle, the overlap never reaches a quarter of the box: the criterion
+ *     for "does not pass through" (measured peak 0.145 m, in the first half second,
+ *     while the light box is pressed into the ground; before the stiffer softness the
+ *     heavy box passed through and came to rest on the ground). */
 static void test_mass_ratio_1000_no_pass_through(void **state)
 {
     int k, ok = 1;
@@ -296,9 +307,11 @@ static void test_mass_ratio_1000_no_pass_through(void **state)
         double lo = k == 0 ? 0.1 : 100.0, hi = k == 0 ? 100.0 : 0.1;
         pair_run r = run_pair(lo, hi, PG_EFFECTS_ALL & ~PG_EFFECT_SLEEPING, 600);
         char what[160];
-        print_message("mass ratio 1:1000: density %g under density %g: smallest distance between the centres %.4f m; after 10 s "
-                      "bottom y %.5f, top y %.5f\n", lo, hi, r.min_gap, r.bottom_y, r.top_y);
-        snprintf(what, sizeof what, "1:1000, density %g under %g: overlap of the two boxes, 1 m - centre distance (m)", lo, hi);
+        print_message("mass ratio 1:1000: density %g under density %g: smallest distance between the centres %.4f m (last second "
+                      "%.4f m); after 10 s bottom y %.5f, top y %.5f\n", lo, hi, r.min_gap, r.settled_min_gap, r.bottom_y, r.top_y);
+        snprintf(what, sizeof what, "1:1000, density %g under %g: overlap at rest, 1 m - centre distance (m)", lo, hi);
+        ok &= within(1.0 - r.settled_min_gap, 0.1, what);
+        snprintf(what, sizeof what, "1:1000, density %g under %g: largest overlap while settling (m)", lo, hi);
         ok &= within(1.0 - r.min_gap, 0.25, what);
     }
     if (!ok) fail();
@@ -503,6 +516,15 @@ static void test_deep_overlap_separates(void **state)
  * unit mass, E = g h + v^2 / 2 (h: height of its bottom above the ground), measured at
  * the top of each bounce (the step at which vy turns from + to -), never exceeds the
  * initial g h0 by more than 1 %. Restitution 0: at rest within 2 s of the release.
+ *
+ * And it bounces as restitution 1 says, up to a known loss: the rebound velocity is set
+ * after the step in which the ball meets the ground (restitution runs once, after the
+ * substeps, from the approach speed v at the start of that step), so the ball does not
+ * rise during that step: it loses at most g v dt of energy per bounce, plus the
+ * integrator's g v h (h the substep) at the apex. So each apex's energy is at least the
+ * previous one's minus g v (dt + h), with v = sqrt(2 E_prev), while v is clearly above
+ * the restitution threshold (1 m/s; below it the ball stops bouncing). A restitution
+ * scaled by 0.98 takes 4 % more per bounce and fails this.
  * ===================================================================================== */
 static void test_bounce_energy_never_grows(void **state)
 {
@@ -511,8 +533,9 @@ static void test_bounce_energy_never_grows(void **state)
     const double r = 0.25, h0 = 2.0, g = 10.0, e0 = g * h0;
     pg_body_def bd = dynamic_at(0, h0 + r);
     pg_body_id ball;
-    double prev_vy = 0.0, max_e = 0.0, min_e = 1e9, last_e = 0.0, max_x = 0.0;
-    int i, apexes = 0, max_at = 0;
+    double prev_vy = 0.0, max_e = 0.0, min_e = 1e9, last_e = 0.0, max_x = 0.0, prev_e = e0, worst_margin = 1e9;
+    const double dt = 1.0 / 60.0, h = dt / 4.0;
+    int i, apexes = 0, max_at = 0, checked = 0, ok = 1;
     (void)state;
     make_ground(t.w);
     sd.restitution = PG_FIX_ONE;
@@ -531,15 +554,28 @@ static void test_bounce_energy_never_grows(void **state)
             if (e > max_e) max_e = e, max_at = i;
             if (e < min_e) min_e = e;
             last_e = e;
+            if (sqrt(2.0 * prev_e) > 1.5) { /* approach speed well above the threshold */
+                double v_impact = sqrt(2.0 * prev_e), floor_e = prev_e - g * v_impact * (dt + h);
+                ++checked;
+                if (e - floor_e < worst_margin) worst_margin = e - floor_e;
+                if (e < floor_e) {
+                    print_error("apex %d (step %d): energy %.5f J/kg below the previous %.5f minus g v (dt + h) = %.5f\n", apexes, i, e, prev_e, floor_e);
+                    ok = 0;
+                }
+            }
+            prev_e = e;
         }
         prev_vy = vy;
     }
     print_message("bounce, restitution 1, 10000 steps: %d apexes; energy at the apexes (J/kg, initial %.4f): max %.5f "
                   "(%+.3f %%, step %d), min %.5f, last %.5f (%+.2f %%); max |x| %.2e m\n",
                   apexes, e0, max_e, 100.0 * (max_e - e0) / e0, max_at, min_e, last_e, 100.0 * (last_e - e0) / e0, max_x);
+    print_message("bounce: %d apexes checked against the one-step loss, smallest margin %.5f J/kg\n", checked, worst_margin);
     free_world(&t);
     assert_true(apexes >= 10); /* it did bounce */
+    assert_true(checked >= 10);
     if (!within(max_e, 1.01 * e0, "restitution 1: energy at the top of a bounce (J/kg), bound 1.01 * initial")) fail();
+    if (!ok) fail();
 }
 
 static void test_bounce_restitution_zero_rests_within_2s(void **state)
