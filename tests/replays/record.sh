@@ -1,7 +1,7 @@
 #!/bin/sh
 # record.sh — (re)make the replay corpus from corpus.txt: the scenes and scripts are the
 # source, the .pgr files the result. Run from anywhere:
-#     tests/replays/record.sh build/tools/pogon-replay
+#     tests/replays/record.sh build/release/tools/pogon-replay
 # Only needed when a scene or script changes or a replay is added; after an intended
 # change of the numerics use `pogon-replay rehash tests/replays/*.pgr` instead.
 set -eu
