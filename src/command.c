@@ -2,6 +2,7 @@
  * its canonical binary encoding, and a queue for later frames. */
 #include "pogon/replay.h"
 #include "wide.h"
+#include "world_internal.h" /* pg__fail: messages in pg_world_last_error */
 
 static const char *const kind_names[PG_CMD_KIND_COUNT] = {
     "none", "create_body", "destroy_body", "add_shape", "make", "set_transform", "set_linear_velocity",
@@ -58,13 +59,111 @@ static const uint32_t kind_fields[PG_CMD_KIND_COUNT] = {
     F_BODY | F_USER                              /* set_user_data */
 };
 
+/* ---- messages (no snprintf in the library) ------------------------------------------------ */
+typedef struct text { char buf[144]; size_t len; } text;
+
+static void put_text(text *t, const char *s)
+{
+    while (*s != '\0' && t->len + 1 < sizeof t->buf) t->buf[t->len++] = *s++;
+    t->buf[t->len] = '\0';
+}
+
+static void put_uint(text *t, uint64_t m)
+{
+    char tmp[24];
+    int n = 0;
+    do {
+        tmp[n++] = (char)('0' + (int)(m % 10u));
+        m /= 10u;
+    } while (m != 0u);
+    while (n > 0 && t->len + 1 < sizeof t->buf) t->buf[t->len++] = tmp[--n];
+    t->buf[t->len] = '\0';
+}
+
+static void put_int(text *t, int64_t v)
+{
+    if (v < 0) put_text(t, "-");
+    put_uint(t, pg__mag64(v));
+}
+
+static void start(text *t, const char *fn)
+{
+    t->len = 0;
+    t->buf[0] = '\0';
+    put_text(t, fn);
+    put_text(t, ": ");
+}
+
+/* An enum member as the int it was given as, without implementation-defined conversion. */
+static int64_t enum_value(uint32_t bits) { return pg__i32_from_bits(bits); }
+
+/* Why the command's kind (and a MAKE command's make_kind) name nothing pg_command_apply
+ * can do, into t; 0 when they are fine. */
+static int kind_problem(const pg_command *c, text *t)
+{
+    if ((unsigned)c->kind >= PG_CMD_KIND_COUNT || c->kind == PG_CMD_NONE) {
+        put_text(t, "command kind ");
+        put_int(t, enum_value((uint32_t)c->kind));
+        put_text(t, " is not a PG_CMD_* value (1..");
+        put_int(t, PG_CMD_KIND_COUNT - 1);
+        put_text(t, ")");
+        return 1;
+    }
+    if (c->kind == PG_CMD_MAKE && (unsigned)c->make_kind >= PG_MAKE_KIND_COUNT) {
+        put_text(t, "make command's make_kind ");
+        put_int(t, enum_value((uint32_t)c->make_kind));
+        put_text(t, " is not a PG_MAKE_* value (0..");
+        put_int(t, PG_MAKE_KIND_COUNT - 1);
+        put_text(t, ")");
+        return 1;
+    }
+    return 0;
+}
+
+/* kind_problem and the rest of what pg_command_encode refuses: a command with no
+ * encoding, which no world can apply (and no replay can record). */
+static int command_problem(const pg_command *c, text *t)
+{
+    uint32_t f;
+    if (kind_problem(c, t)) return 1;
+    f = kind_fields[c->kind];
+    if ((f & F_GEOMETRY) != 0 && (c->geometry.count < 0 || c->geometry.count > PG_MAX_VERTICES)) {
+        put_text(t, "add_shape command's geometry.count ");
+        put_int(t, c->geometry.count);
+        put_text(t, " is outside 0..8");
+        return 1;
+    }
+    if ((f & F_GEOMETRY) != 0 && (unsigned)c->geometry.kind > (unsigned)PG_SHAPE_POLYGON) {
+        put_text(t, "add_shape command's geometry.kind ");
+        put_int(t, enum_value((uint32_t)c->geometry.kind));
+        put_text(t, " is not a PG_SHAPE_* value (0..");
+        put_int(t, PG_SHAPE_POLYGON);
+        put_text(t, ")");
+        return 1;
+    }
+    if ((f & F_BODY_DEF) != 0 && (unsigned)c->body_def.type > (unsigned)PG_BODY_DYNAMIC) {
+        put_text(t, pg_command_kind_name(c->kind));
+        put_text(t, " command's body_def.type ");
+        put_int(t, enum_value((uint32_t)c->body_def.type));
+        put_text(t, " is not a PG_BODY_* value (0..");
+        put_int(t, PG_BODY_DYNAMIC);
+        put_text(t, ")");
+        return 1;
+    }
+    return 0;
+}
+
 pg_result pg_command_apply(pg_world *w, const pg_command *c, pg_body_id *created)
 {
     pg_body_id id = {0, 0};
     pg_shape_id sid;
     pg_result r;
+    text t;
     if (created != NULL) *created = id;
-    if (w == NULL || c == NULL) return PG_ERR_NULL;
+    if (w == NULL) return PG_ERR_NULL;
+    if (c == NULL) return pg__fail(w, PG_ERR_NULL, "pg_command_apply: command is NULL");
+    start(&t, "pg_command_apply");
+    if (kind_problem(c, &t)) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, t.buf);
     switch (c->kind) {
     case PG_CMD_CREATE_BODY: r = pg_body_create(w, &c->body_def, &id); break;
     case PG_CMD_DESTROY_BODY: return pg_body_destroy(w, c->body);
@@ -77,7 +176,7 @@ pg_result pg_command_apply(pg_world *w, const pg_command *c, pg_body_id *created
         case PG_MAKE_TRIANGLE: r = pg_make_triangle(w, &c->body_def, &c->shape_def, c->size0, &id); break;
         case PG_MAKE_STAR: r = pg_make_star(w, &c->body_def, &c->shape_def, c->size0, &id); break;
         case PG_MAKE_WALL: r = pg_make_wall(w, &c->body_def, &c->shape_def, c->size0, c->size1, &id); break;
-        default: return PG_ERR_INVALID_ARGUMENT;
+        default: return pg__fail(w, PG_ERR_INVALID_ARGUMENT, "pg_command_apply: make_kind is not a PG_MAKE_* value"); /* kind_problem caught it */
         }
         break;
     case PG_CMD_SET_TRANSFORM: return pg_body_set_transform(w, c->body, c->vec, c->angle);
@@ -100,7 +199,7 @@ pg_result pg_command_apply(pg_world *w, const pg_command *c, pg_body_id *created
     case PG_CMD_SET_FIXED_ROTATION: return pg_body_set_fixed_rotation(w, c->body, c->value != 0);
     case PG_CMD_SET_FILTER: return pg_body_set_filter(w, c->body, c->value, c->value2);
     case PG_CMD_SET_USER_DATA: return pg_body_set_user_data(w, c->body, c->user_data);
-    default: return PG_ERR_INVALID_ARGUMENT;
+    default: return pg__fail(w, PG_ERR_INVALID_ARGUMENT, "pg_command_apply: command kind is not a PG_CMD_* value"); /* kind_problem caught it */
     }
     if (r == PG_OK && created != NULL) *created = id;
     return r;
@@ -327,10 +426,30 @@ void pg_command_queue_init(pg_command_queue *q, pg_command *commands, uint64_t *
 
 pg_result pg_command_queue_push(pg_command_queue *q, const pg_world *world, uint64_t frame, const pg_command *command)
 {
+    static const char fn[] = "pg_command_queue_push";
     uint32_t i;
-    if (q == NULL || world == NULL || command == NULL) return PG_ERR_NULL;
-    if (frame < pg_world_frame(world)) return PG_ERR_INVALID_ARGUMENT;
-    if (q->count >= q->capacity) return PG_ERR_CAPACITY;
+    text t;
+    if (world == NULL) return PG_ERR_NULL;
+    if (q == NULL) return pg__fail(world, PG_ERR_NULL, "pg_command_queue_push: queue is NULL");
+    if (command == NULL) return pg__fail(world, PG_ERR_NULL, "pg_command_queue_push: command is NULL");
+    start(&t, fn);
+    if (command_problem(command, &t)) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, t.buf);
+    if (frame < pg_world_frame(world)) {
+        put_text(&t, "frame ");
+        put_uint(&t, frame);
+        put_text(&t, " is already past (the world is at frame ");
+        put_uint(&t, pg_world_frame(world));
+        put_text(&t, "): use pg_world_frame(world) or later");
+        return pg__fail(world, PG_ERR_INVALID_ARGUMENT, t.buf);
+    }
+    if (q->capacity == 0 || q->commands == NULL || q->frames == NULL)
+        return pg__fail(world, PG_ERR_CAPACITY, "pg_command_queue_push: the queue has no storage: give pg_command_queue_init two arrays and their capacity");
+    if (q->count >= q->capacity) {
+        put_text(&t, "the queue is full (capacity ");
+        put_uint(&t, q->capacity);
+        put_text(&t, "): apply due commands (pg_command_queue_apply_due) or give it larger arrays");
+        return pg__fail(world, PG_ERR_CAPACITY, t.buf);
+    }
     /* insert after every command of the same or an earlier frame: stable by frame */
     i = q->count;
     while (i > 0 && q->frames[i - 1u] > frame) {

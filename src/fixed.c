@@ -44,7 +44,7 @@ pg_fix pg_fix_from_ratio(int64_t num, int64_t den)
     return r;
 }
 
-pg_fix_status pg_fix_div_checked(pg_fix a, pg_fix b, pg_fix *out)
+static pg_fix_status div_q16(pg_fix a, pg_fix b, pg_fix *out)
 {
     uint64_t un, ud, q;
     if (b == 0) return div64_q16(a, b, out);
@@ -59,10 +59,20 @@ pg_fix_status pg_fix_div_checked(pg_fix a, pg_fix b, pg_fix *out)
     return PG_FIX_OK;
 }
 
+/* The public *_checked functions and pg_fix_parse accept out == NULL (fixed.h): the
+ * status is computed all the same and the value dropped. */
+pg_fix_status pg_fix_div_checked(pg_fix a, pg_fix b, pg_fix *out)
+{
+    pg_fix r;
+    pg_fix_status st = div_q16(a, b, &r);
+    if (out != NULL) *out = r;
+    return st;
+}
+
 pg_fix pg_fix_div(pg_fix a, pg_fix b)
 {
     pg_fix r;
-    (void)pg_fix_div_checked(a, b, &r);
+    (void)div_q16(a, b, &r);
     return r;
 }
 
@@ -70,7 +80,7 @@ pg_fix pg_fix_recip(pg_fix a) { return pg_fix_div(PG_FIX_ONE, a); }
 
 static pg_fix_status from_wide(int64_t exact, pg_fix *out)
 {
-    *out = pg__sat64(exact);
+    if (out != NULL) *out = pg__sat64(exact);
     return (exact > PG_FIX_MAX || exact < PG_FIX_MIN) ? PG_FIX_OVERFLOW : PG_FIX_OK;
 }
 
@@ -195,7 +205,7 @@ const uint32_t *pg__isqrt64_seed_nodes(uint32_t *count)
 #endif
 }
 
-pg_fix_status pg_fix_sqrt_checked(pg_fix a, pg_fix *out)
+static pg_fix_status sqrt_q16(pg_fix a, pg_fix *out)
 {
     uint64_t v;
     uint32_t r;
@@ -207,10 +217,18 @@ pg_fix_status pg_fix_sqrt_checked(pg_fix a, pg_fix *out)
     return PG_FIX_OK;
 }
 
+pg_fix_status pg_fix_sqrt_checked(pg_fix a, pg_fix *out)
+{
+    pg_fix r;
+    pg_fix_status st = sqrt_q16(a, &r);
+    if (out != NULL) *out = r;
+    return st;
+}
+
 pg_fix pg_fix_sqrt(pg_fix a)
 {
     pg_fix r;
-    (void)pg_fix_sqrt_checked(a, &r);
+    (void)sqrt_q16(a, &r);
     return r;
 }
 
@@ -235,7 +253,7 @@ const char *pg_fix_status_message(pg_fix_status status)
 #define FRACTION_DIGITS 17
 #define FIVE_POW_17 UINT64_C(762939453125)
 
-pg_fix_status pg_fix_parse(const char *text, size_t len, pg_fix *out)
+static pg_fix_status parse_q16(const char *text, size_t len, pg_fix *out)
 {
     size_t i = 0;
     int negative = 0, digits = 0, frac_digits = 0;
@@ -273,6 +291,14 @@ pg_fix_status pg_fix_parse(const char *text, size_t len, pg_fix *out)
     }
     *out = negative ? -(pg_fix)magnitude : (pg_fix)magnitude;
     return PG_FIX_OK;
+}
+
+pg_fix_status pg_fix_parse(const char *text, size_t len, pg_fix *out)
+{
+    pg_fix v;
+    pg_fix_status st = parse_q16(text, len, &v);
+    if (out != NULL) *out = v;
+    return st;
 }
 
 size_t pg_fix_format(pg_fix a, char *buf, size_t size)

@@ -3,6 +3,7 @@
  * against the size the caller gave. */
 #include "pogon/replay_file.h"
 #include "pogon/scene_file.h"
+#include "world_internal.h" /* pg__fail: pg_replay_apply_frame's messages */
 
 /* ---- little-endian fields ------------------------------------------------------------ */
 static void put_u16(uint8_t *p, uint32_t v)
@@ -697,13 +698,99 @@ static size_t apply_frame_at(pg_world *world, const uint8_t *data, size_t end, s
     return pos;
 }
 
+/* The record at pos (a frame or a checkpoint, by its tag, as the reader decides) in
+ * [pos, end): the offset after it, or 0 when it is not one (0 is never a record's end:
+ * records start after the header). */
+static size_t record_after(const uint8_t *data, size_t pos, size_t end, size_t cs)
+{
+    uint32_t n, c;
+    if (pos >= end) return 0;
+    if (data[pos] == PG_REPLAY_TAG_CHECKPOINT) return end - pos >= cs ? pos + cs : 0;
+    if (data[pos] != PG_REPLAY_TAG_FRAME || end - pos < 3u) return 0;
+    n = get_u16(data + pos + 1);
+    pos += 3u;
+    for (c = 0; c < n; ++c) {
+        pg_command cmd;
+        size_t used = 0;
+        if (pos >= end || pg_command_decode(data + pos, end - pos, &cmd, &used, NULL, NULL) != PG_OK || used == 0) return 0;
+        pos += used;
+    }
+    return pos;
+}
+
+/* FNV-1a (pg_hash_bytes, the format's hash) runs backwards: h_before = (h_after *
+ * prime^-1) ^ byte. */
+#define FNV_PRIME UINT64_C(0x100000001b3)
+#define FNV_PRIME_INVERSE UINT64_C(0xce965057aff6957b)
+PG__STATIC_ASSERT(FNV_PRIME * FNV_PRIME_INVERSE == 1u, fnv_prime_inverse);
+
+/* Is `off` where a frame record of the file (validated by pg_replay_read) starts? Only a
+ * walk over the records from a known start can tell: an 'F' byte inside a command can
+ * be followed by bytes that parse as records too. Walking from the first record costs
+ * time in proportion to the offset, which a loop over the frames (re-simulation after
+ * each step) pays quadratically, so the walk starts at the block of `off` instead:
+ *   1. If off starts a record, the records from it reach the checkpoint (or the end
+ *      record) that closes its block, whose block hash H covers [block start, x).
+ *   2. Running the hash backwards from H over the bytes before x, the block start is
+ *      where the state is the seed again (a chance of 2^-64 per byte of any other
+ *      place being one: every such place is tried, the real start among them).
+ *   3. From a start found at or before off, the records reach off exactly or pass it.
+ * So off is accepted exactly when it is a record start (unless the file was made to
+ * collide with its own hashes, and then only with records of that file). Cost: a block
+ * for a real record; a backward hash to the first record for any other offset. */
+static int frame_record_at(const uint8_t *data, const pg_replay_info *info, size_t off)
+{
+    size_t end = info->end_offset, cs = checkpoint_size(info->section_count), pos, x, y;
+    uint64_t h;
+    if (off < info->records_offset || off >= end || data[off] != PG_REPLAY_TAG_FRAME) return 0;
+    /* 1. the record that closes the block */
+    pos = off;
+    do {
+        pos = record_after(data, pos, end, cs);
+        if (pos == 0) return 0;
+    } while (pos < end && data[pos] != PG_REPLAY_TAG_CHECKPOINT);
+    if (pos < end) {
+        if (end - pos < cs) return 0;
+        x = pos + cs - 8u; /* the checkpoint's block hash */
+    } else {
+        x = end + 13u; /* the end record's (info->size - end >= PG_REPLAY_TRAILER_SIZE) */
+    }
+    h = get_u64(data + x);
+    /* 2. and 3. */
+    for (y = x; y > info->records_offset;) {
+        --y;
+        h = (h * FNV_PRIME_INVERSE) ^ data[y];
+        if (h == PG_HASH_SEED && y <= off) {
+            size_t q = y;
+            while (q != 0 && q < off) q = record_after(data, q, end, cs);
+            if (q == off) return 1;
+        }
+    }
+    return 0;
+}
+
 pg_result pg_replay_apply_frame(pg_world *world, const uint8_t *data, const pg_replay_info *info, size_t record_offset,
                                 uint32_t *applied, uint32_t *failures)
 {
-    if (world == NULL || data == NULL || info == NULL) return PG_ERR_NULL;
-    if (record_offset < info->records_offset || record_offset + 3u > info->end_offset ||
-        data[record_offset] != PG_REPLAY_TAG_FRAME)
-        return PG_ERR_INVALID_ARGUMENT;
+    char buf[144];
+    msg m;
+    if (applied != NULL) *applied = 0;
+    if (failures != NULL) *failures = 0;
+    if (world == NULL) return PG_ERR_NULL;
+    if (data == NULL) return pg__fail(world, PG_ERR_NULL, "pg_replay_apply_frame: data is NULL");
+    if (info == NULL) return pg__fail(world, PG_ERR_NULL, "pg_replay_apply_frame: info is NULL");
+    if (info->records_offset > info->end_offset || info->end_offset > info->size ||
+        info->size - info->end_offset < PG_REPLAY_TRAILER_SIZE)
+        return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "pg_replay_apply_frame: info is not one pg_replay_read filled in");
+    if (!frame_record_at(data, info, record_offset)) {
+        m.buf = buf;
+        m.cap = sizeof buf;
+        m.len = 0;
+        msg_text(&m, "pg_replay_apply_frame: record_offset ");
+        msg_u64(&m, record_offset);
+        msg_text(&m, " is not a frame record's start (see pg_replay_frame_result.record_offset)");
+        return pg__fail(world, PG_ERR_INVALID_ARGUMENT, buf);
+    }
     apply_frame_at(world, data, info->end_offset, record_offset, applied, failures);
     return PG_OK;
 }

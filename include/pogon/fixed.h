@@ -116,8 +116,9 @@ pg_fix pg_fix_from_ratio(int64_t num, int64_t den);
 /* Parse exact decimal text: [+|-]digits[.digits], [+|-].digits or [+|-]digits. (so
  * ".5" and "5." are accepted), nothing else (no spaces, no exponent, no "." alone). Any number of digits; the result is the correctly rounded
  * Q16.16 value (ties away from zero). `len` bytes are read; the text need not be
- * NUL-terminated. Returns PG_FIX_SYNTAX for malformed text (and *out = 0),
- * PG_FIX_OVERFLOW when the value is beyond +-PG_FIX_MAX (and *out saturated). */
+ * NUL-terminated. Returns PG_FIX_SYNTAX for malformed text or text == NULL (and
+ * *out = 0), PG_FIX_OVERFLOW when the value is beyond +-PG_FIX_MAX (and *out saturated).
+ * out may be NULL: the text is checked and the status returned, the value is dropped. */
 pg_fix_status pg_fix_parse(const char *text, size_t len, pg_fix *out);
 
 /* Shortest decimal text that pg_fix_parse turns back into `a` (at most 5 fraction
@@ -145,13 +146,16 @@ static inline pg_fix pg_fix_mul(pg_fix a, pg_fix b)
 /* a/b rounded; b == 0 gives +PG_FIX_MAX for a > 0, PG_FIX_MIN for a < 0, 0 for a == 0. */
 pg_fix pg_fix_div(pg_fix a, pg_fix b);
 
+/* The saturating result in *out and its status. out may be NULL: the status alone is
+ * returned ("would a + b overflow?"); it is never an error. */
 pg_fix_status pg_fix_add_checked(pg_fix a, pg_fix b, pg_fix *out);
 pg_fix_status pg_fix_sub_checked(pg_fix a, pg_fix b, pg_fix *out);
 pg_fix_status pg_fix_mul_checked(pg_fix a, pg_fix b, pg_fix *out);
 pg_fix_status pg_fix_div_checked(pg_fix a, pg_fix b, pg_fix *out);
 
 /* Correctly rounded square root (nearest; there are no ties). sqrt of a negative
- * value is 0 (pg_fix_sqrt_checked reports PG_FIX_DOMAIN). */
+ * value is 0 (pg_fix_sqrt_checked reports PG_FIX_DOMAIN; its out may be NULL, as for
+ * the other *_checked functions). */
 pg_fix pg_fix_sqrt(pg_fix a);
 pg_fix_status pg_fix_sqrt_checked(pg_fix a, pg_fix *out);
 

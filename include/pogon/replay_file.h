@@ -160,7 +160,13 @@ int pg_replay_player_done(const pg_replay_player *p);
  * frame. PG_ERR_INVALID_ARGUMENT when done. */
 pg_result pg_replay_player_step(pg_replay_player *p, pg_replay_frame_result *out);
 /* Apply the commands of the frame record at `record_offset` (from a frame result) to any
- * world: for re-simulation after a snapshot restore. Does not step. */
+ * world: for re-simulation after a snapshot restore. Does not step. *applied and
+ * *failures (each may be NULL) count the commands applied and those that failed (a
+ * failing command changes nothing, as in pg_command_queue_apply_due); both are 0 when
+ * the call fails. record_offset must be where one of the file's frame records starts
+ * (checked, at the cost of reading the checkpoint block around it): any other offset (a
+ * checkpoint, a byte inside a command, past the end) returns PG_ERR_INVALID_ARGUMENT
+ * and changes nothing. Errors are explained in pg_world_last_error(world). */
 pg_result pg_replay_apply_frame(pg_world *world, const uint8_t *data, const pg_replay_info *info, size_t record_offset,
                                 uint32_t *applied, uint32_t *failures);
 

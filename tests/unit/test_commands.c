@@ -971,6 +971,97 @@ static void test_queue_late(void **state)
     free_world(&t);
 }
 
+/* ---- messages and validation at push -------------------------------------------------------- */
+/* r is `code` and pg_world_last_error starts with the code's name and mentions both texts. */
+static void expect_message(const pg_world *w, pg_result r, pg_result code, const char *text1, const char *text2, int line)
+{
+    const char *e = pg_world_last_error(w), *name = pg_result_name(code);
+    if (r != code || strncmp(e, name, strlen(name)) != 0 || strstr(e, text1) == NULL || strstr(e, text2) == NULL) {
+        print_error("line %d: got %s \"%s\", want %s mentioning \"%s\" and \"%s\"\n", line, pg_result_name(r), e, name,
+                    text1, text2);
+        fail();
+    }
+}
+#define EXPECT_MESSAGE(w, call, code, text1, text2) expect_message((w), (call), (code), (text1), (text2), __LINE__)
+
+/* pg_command_apply says which command was refused and why. */
+static void test_apply_messages(void **state)
+{
+    test_world t = make_world();
+    pg_command c;
+    pg_body_id created;
+    uint64_t h = pg_world_hash(t.w);
+    (void)state;
+    c = pg_command_init((pg_command_kind)55);
+    EXPECT_MESSAGE(t.w, pg_command_apply(t.w, &c, &created), PG_ERR_INVALID_ARGUMENT, "pg_command_apply", "kind 55");
+    c = pg_command_init((pg_command_kind)-3);
+    EXPECT_MESSAGE(t.w, pg_command_apply(t.w, &c, NULL), PG_ERR_INVALID_ARGUMENT, "pg_command_apply", "kind -3");
+    c = pg_command_init(PG_CMD_NONE);
+    EXPECT_MESSAGE(t.w, pg_command_apply(t.w, &c, NULL), PG_ERR_INVALID_ARGUMENT, "pg_command_apply", "kind 0");
+    c = full_command(PG_CMD_MAKE, t.target);
+    c.make_kind = (pg_make_kind)17;
+    EXPECT_MESSAGE(t.w, pg_command_apply(t.w, &c, &created), PG_ERR_INVALID_ARGUMENT, "pg_command_apply", "make_kind 17");
+    assert_int_equal(created.index, 0);
+    EXPECT_MESSAGE(t.w, pg_command_apply(t.w, NULL, &created), PG_ERR_NULL, "pg_command_apply", "command is NULL");
+    assert_true(pg_world_hash(t.w) == h);
+    free_world(&t);
+}
+
+/* pg_command_queue_push refuses what can never be applied (what pg_command_encode refuses)
+ * and says why, in the world's pg_world_last_error, for every refusal. */
+static void test_queue_push_validates(void **state)
+{
+    test_world t = make_world();
+    pg_command commands[2], c;
+    uint64_t frames[2];
+    pg_command_queue q, none;
+    uint64_t h;
+    int k;
+    (void)state;
+    pg_command_queue_init(&q, commands, frames, 2);
+    for (k = 0; k < 3; ++k) assert_int_equal(pg_world_step(t.w), PG_OK);
+    h = pg_world_hash(t.w);
+    c = pg_command_init((pg_command_kind)55);
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "kind 55");
+    c = pg_command_init(PG_CMD_NONE);
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "kind 0");
+    c = pg_command_init(PG_CMD_KIND_COUNT);
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "kind 24");
+    c = full_command(PG_CMD_MAKE, t.target);
+    c.make_kind = (pg_make_kind)9;
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "make_kind 9");
+    c = full_command(PG_CMD_CREATE_BODY, t.target);
+    c.body_def.type = (pg_body_type)3;
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "body_def.type 3");
+    c = full_command(PG_CMD_ADD_SHAPE, t.target);
+    c.geometry.count = 9;
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "geometry.count 9");
+    c = full_command(PG_CMD_ADD_SHAPE, t.target);
+    c.geometry.kind = (pg_shape_kind)4;
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "geometry.kind 4");
+    assert_int_equal(q.count, 0);
+    /* the other refusals say why too */
+    c = full_command(PG_CMD_SET_GRAVITY, t.target);
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 2, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "frame 2");
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, NULL), PG_ERR_NULL, "pg_command_queue_push", "command is NULL");
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(NULL, t.w, 5, &c), PG_ERR_NULL, "pg_command_queue_push", "queue is NULL");
+    pg_command_queue_init(&none, NULL, frames, 2);
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&none, t.w, 5, &c), PG_ERR_CAPACITY, "pg_command_queue_push", "no storage");
+    assert_int_equal(pg_command_queue_push(&q, t.w, 3, &c), PG_OK);
+    assert_int_equal(pg_command_queue_push(&q, t.w, 5, &c), PG_OK);
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_CAPACITY, "pg_command_queue_push", "full (capacity 2)");
+    assert_int_equal(q.count, 2);
+    assert_true(pg_world_hash(t.w) == h);
+    /* every valid kind is accepted */
+    for (k = 1; k < PG_CMD_KIND_COUNT; ++k) {
+        pg_command_queue one;
+        c = full_command((pg_command_kind)k, t.target);
+        pg_command_queue_init(&one, commands, frames, 1);
+        PG_EXPECT_EQ(pg_command_queue_push(&one, t.w, 3, &c), PG_OK, "%s", pg_command_kind_name(c.kind));
+    }
+    free_world(&t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -991,6 +1082,8 @@ int main(void)
         cmocka_unit_test_teardown(test_queue_order, free_leftovers),
         cmocka_unit_test_teardown(test_queue_errors_and_failures, free_leftovers),
         cmocka_unit_test_teardown(test_queue_late, free_leftovers),
+        cmocka_unit_test_teardown(test_apply_messages, free_leftovers),
+        cmocka_unit_test_teardown(test_queue_push_validates, free_leftovers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -988,6 +988,40 @@ static void test_parse_random(void **state)
     }
 }
 
+/* A NULL result pointer is allowed (fixed.h): the status is still computed and returned,
+ * the value is discarded. Before: a store through NULL (fixed.c). */
+static void test_null_out(void **state)
+{
+    pgt_rng r = pgt_rng_seed(21);
+    (void)state;
+    assert_int_equal(pg_fix_parse("1.5", 3, NULL), PG_FIX_OK);
+    assert_int_equal(pg_fix_parse("-32768", 6, NULL), PG_FIX_OVERFLOW);
+    assert_int_equal(pg_fix_parse("1.5x", 4, NULL), PG_FIX_SYNTAX);
+    assert_int_equal(pg_fix_parse(NULL, 3, NULL), PG_FIX_SYNTAX);
+    assert_int_equal(pg_fix_parse("", 0, NULL), PG_FIX_SYNTAX);
+    assert_int_equal(pg_fix_add_checked(PG_FIX_MAX, 1, NULL), PG_FIX_OVERFLOW);
+    assert_int_equal(pg_fix_sub_checked(PG_FIX_MIN, 1, NULL), PG_FIX_OVERFLOW);
+    assert_int_equal(pg_fix_mul_checked(PG_FIX_C(200), PG_FIX_C(200), NULL), PG_FIX_OVERFLOW);
+    assert_int_equal(pg_fix_div_checked(PG_FIX_ONE, 0, NULL), PG_FIX_DIV_ZERO);
+    assert_int_equal(pg_fix_div_checked(0, 0, NULL), PG_FIX_DIV_ZERO);
+    assert_int_equal(pg_fix_div_checked(PG_FIX_C(30000), 1, NULL), PG_FIX_OVERFLOW);
+    assert_int_equal(pg_fix_sqrt_checked(-1, NULL), PG_FIX_DOMAIN);
+    assert_int_equal(pg_fix_sqrt_checked(PG_FIX_C(4), NULL), PG_FIX_OK);
+    /* the same status as with a result pointer, for values at every scale */
+    for (int i = 0; i < 20000; ++i) {
+        pg_fix a = pgt_fix_any(&r), b = pgt_fix_any(&r), v;
+        char text[PG_FIX_FORMAT_MAX];
+        size_t n = pg_fix_format(a, text, sizeof text);
+        PG_EXPECT_EQ(pg_fix_add_checked(a, b, NULL), pg_fix_add_checked(a, b, &v), "add %d %d", a, b);
+        PG_EXPECT_EQ(pg_fix_sub_checked(a, b, NULL), pg_fix_sub_checked(a, b, &v), "sub %d %d", a, b);
+        PG_EXPECT_EQ(pg_fix_mul_checked(a, b, NULL), pg_fix_mul_checked(a, b, &v), "mul %d %d", a, b);
+        PG_EXPECT_EQ(pg_fix_div_checked(a, b, NULL), pg_fix_div_checked(a, b, &v), "div %d %d", a, b);
+        PG_EXPECT_EQ(pg_fix_div_checked(a, 0, NULL), pg_fix_div_checked(a, 0, &v), "div %d 0", a);
+        PG_EXPECT_EQ(pg_fix_sqrt_checked(a, NULL), pg_fix_sqrt_checked(a, &v), "sqrt %d", a);
+        PG_EXPECT_EQ(pg_fix_parse(text, n, NULL), pg_fix_parse(text, n, &v), "parse %s", text);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1011,6 +1045,7 @@ int main(void)
         cmocka_unit_test(test_parse_overflow),
         cmocka_unit_test(test_parse_malformed),
         cmocka_unit_test(test_parse_random),
+        cmocka_unit_test(test_null_out),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -377,6 +377,152 @@ static void test_writer_rejects(void **state)
     }
 }
 
+/* pg_replay_apply_frame accepts exactly the offsets of the file's frame records: every
+ * other offset (past the end, wrapping, a checkpoint, a byte inside a command, even one
+ * that reads 'F') is PG_ERR_INVALID_ARGUMENT with a message and changes nothing.
+ * Before: (size_t)-2 wrapped record_offset + 3 (UBSan in replay_file.c) and an 'F' byte
+ * inside a command was applied as a frame. */
+static void test_apply_frame_offsets(void **state)
+{
+    world_box b = make_world(), fresh = make_world();
+    pg_replay_writer w;
+    static uint8_t buf[1 << 14];
+    pg_command cmds[2];
+    pg_replay_info info;
+    pg_replay_error err;
+    size_t size, off, starts[8], inside_f = 0;
+    uint32_t nstarts = 0, f, applied, failures;
+    uint64_t h;
+    void *memory;
+    size_t mem;
+    pg_replay_player p;
+    pg_replay_frame_result fr;
+    pg_body_id ball = {3, 1};
+    (void)state;
+    assert_int_equal(pg_replay_writer_begin(&w, buf, sizeof buf, scene_text, sizeof scene_text - 1, 2), PG_OK);
+    assert_int_equal(pg_replay_writer_add_checkpoint_world(&w, b.world), PG_OK);
+    for (f = 0; f < 5; ++f) {
+        uint32_t n = 0, i;
+        if (f == 1 || f == 2) {
+            cmds[n] = pg_command_init(PG_CMD_SET_USER_DATA); /* user data "F\0\0...": a frame tag with 0 commands */
+            cmds[n].body = ball;
+            cmds[n].user_data = (uint64_t)PG_REPLAY_TAG_FRAME;
+            n++;
+            cmds[n] = pg_command_init(PG_CMD_SET_ANGULAR_VELOCITY);
+            cmds[n].body = ball;
+            cmds[n].scalar = PG_FIX_C(2);
+            n++;
+        }
+        assert_int_equal(pg_replay_writer_add_frame(&w, cmds, n), PG_OK);
+        for (i = 0; i < n; ++i) assert_int_equal(pg_command_apply(b.world, &cmds[i], NULL), PG_OK);
+        assert_int_equal(pg_world_step(b.world), PG_OK);
+        if (pg_replay_writer_checkpoint_due(&w)) assert_int_equal(pg_replay_writer_add_checkpoint_world(&w, b.world), PG_OK);
+    }
+    assert_int_equal(pg_replay_writer_finish(&w, pg_world_hash(b.world), &size), PG_OK);
+    assert_int_equal(pg_replay_read(buf, size, &info, &err), PG_OK);
+    /* the real frame records, from the player */
+    assert_int_equal(pg_replay_world_memory_size(&info, &mem, &err), PG_OK);
+    memory = malloc(mem);
+    assert_int_equal(pg_replay_player_begin(&p, buf, &info, memory, mem, &fr, &err), PG_OK);
+    while (!pg_replay_player_done(&p)) {
+        assert_int_equal(pg_replay_player_step(&p, &fr), PG_OK);
+        starts[nstarts++] = fr.record_offset;
+    }
+    assert_int_equal(nstarts, 5);
+    /* each applies its commands */
+    for (f = 0; f < nstarts; ++f) {
+        assert_int_equal(pg_replay_apply_frame(fresh.world, buf, &info, starts[f], &applied, &failures), PG_OK);
+        PG_EXPECT_EQ(applied, f == 1 || f == 2 ? 2 : 0, "frame %u", f);
+        PG_EXPECT_EQ(failures, 0, "frame %u", f);
+    }
+    h = pg_world_hash(fresh.world);
+    /* 'F' bytes that are not record starts (the user data) */
+    for (off = info.records_offset; off < info.end_offset; ++off) {
+        int real = 0;
+        for (f = 0; f < nstarts; ++f) real |= off == starts[f];
+        if (real || buf[off] != PG_REPLAY_TAG_FRAME) continue;
+        inside_f++;
+        if (pg_replay_apply_frame(fresh.world, buf, &info, off, NULL, NULL) != PG_ERR_INVALID_ARGUMENT)
+            fail_msg("offset %zu (an 'F' inside a command) accepted as a frame record", off);
+    }
+    assert_true(inside_f >= 2);
+    /* offsets that wrap (record_offset + 3 overflowed before) */
+    for (off = 1; off <= 8; ++off) {
+        applied = 99;
+        assert_int_equal(pg_replay_apply_frame(fresh.world, buf, &info, (size_t)0 - off, &applied, NULL), PG_ERR_INVALID_ARGUMENT);
+        assert_int_equal(applied, 0);
+    }
+    /* every other offset in and just past the file is refused */
+    for (off = 0; off <= size + 4; ++off) {
+        int real = 0;
+        for (f = 0; f < nstarts; ++f) real |= off == starts[f];
+        if (real) continue;
+        applied = failures = 99;
+        if (pg_replay_apply_frame(fresh.world, buf, &info, off, &applied, &failures) != PG_ERR_INVALID_ARGUMENT)
+            fail_msg("offset %zu (byte %d) accepted as a frame record", off, off < size ? buf[off] : -1);
+        PG_EXPECT_EQ(applied, 0, "offset %zu", off);
+        PG_EXPECT_EQ(failures, 0, "offset %zu", off);
+        if (strstr(pg_world_last_error(fresh.world), "pg_replay_apply_frame") == NULL)
+            fail_msg("offset %zu: last error \"%s\"", off, pg_world_last_error(fresh.world));
+    }
+    assert_true(pg_world_hash(fresh.world) == h);
+    assert_int_equal(pg_replay_apply_frame(fresh.world, NULL, &info, starts[0], NULL, NULL), PG_ERR_NULL);
+    assert_non_null(strstr(pg_world_last_error(fresh.world), "data is NULL"));
+    assert_int_equal(pg_replay_apply_frame(fresh.world, buf, NULL, starts[0], NULL, NULL), PG_ERR_NULL);
+    assert_non_null(strstr(pg_world_last_error(fresh.world), "info is NULL"));
+    assert_int_equal(pg_replay_apply_frame(NULL, buf, &info, starts[0], NULL, NULL), PG_ERR_NULL);
+    free(memory);
+    free(b.memory);
+    free(fresh.memory);
+}
+
+/* On a longer recording (13 checkpoint blocks, commands in some frames): exactly the
+ * frame record starts found by walking the file from its first record are accepted. */
+static void test_apply_frame_every_offset(void **state)
+{
+    size_t size, pos, off, cs, nstarts = 0;
+    uint64_t h;
+    uint8_t *file = record(125, 10, 1 << 16, &size, &h);
+    uint8_t *is_start;
+    pg_replay_info info;
+    pg_replay_error err;
+    world_box b = make_world();
+    (void)state;
+    assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
+    is_start = calloc(size + 8, 1);
+    assert_non_null(is_start);
+    cs = 21u + 8u * info.section_count;
+    for (pos = info.records_offset; pos < info.end_offset;) { /* the reference walk */
+        uint32_t n, c;
+        if (file[pos] == PG_REPLAY_TAG_CHECKPOINT) {
+            pos += cs;
+            continue;
+        }
+        assert_int_equal(file[pos], PG_REPLAY_TAG_FRAME);
+        is_start[pos] = 1;
+        nstarts++;
+        n = (uint32_t)file[pos + 1] | ((uint32_t)file[pos + 2] << 8);
+        pos += 3;
+        for (c = 0; c < n; ++c) {
+            pg_command cmd;
+            size_t used;
+            assert_int_equal(pg_command_decode(file + pos, info.end_offset - pos, &cmd, &used, NULL, NULL), PG_OK);
+            pos += used;
+        }
+    }
+    assert_int_equal(nstarts, 125);
+    for (off = 0; off < size + 8; ++off) {
+        uint64_t before = pg_world_hash(b.world);
+        pg_result r = pg_replay_apply_frame(b.world, file, &info, off, NULL, NULL);
+        if (r != (is_start[off] ? PG_OK : PG_ERR_INVALID_ARGUMENT))
+            fail_msg("offset %zu (byte %d, a record start: %d): %s", off, off < size ? file[off] : -1, is_start[off], pg_result_name(r));
+        if (!is_start[off] && pg_world_hash(b.world) != before) fail_msg("refused offset %zu changed the world", off);
+    }
+    free(is_start);
+    free(file);
+    free(b.memory);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -386,6 +532,8 @@ int main(void)
         cmocka_unit_test(test_truncation),
         cmocka_unit_test(test_changed_command_diverges),
         cmocka_unit_test(test_snapshot_round_trip_10000),
+        cmocka_unit_test(test_apply_frame_offsets),
+        cmocka_unit_test(test_apply_frame_every_offset),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1033,6 +1033,261 @@ static void test_raycast(void **state)
     free_world(&t);
 }
 
+/* ---- queries: validation, messages, far bodies ------------------------------------------------------ */
+/* r is `code`, and pg_world_last_error starts with the code's name and mentions each of
+ * the (up to two) texts: the function and what is wrong. */
+static void expect_error(const pg_world *w, pg_result r, pg_result code, const char *text1, const char *text2, int line)
+{
+    const char *e = pg_world_last_error(w);
+    const char *name = pg_result_name(code);
+    if (r != code) {
+        print_error("line %d: got %s, want %s (last error \"%s\")\n", line, pg_result_name(r), name, e);
+        fail();
+    }
+    if (strncmp(e, name, strlen(name)) != 0 || strstr(e, text1) == NULL || (text2 != NULL && strstr(e, text2) == NULL)) {
+        print_error("line %d: last error \"%s\" does not start with %s and mention \"%s\" and \"%s\"\n", line, e, name,
+                    text1, text2 != NULL ? text2 : "");
+        fail();
+    }
+}
+#define EXPECT_ERROR(w, call, code, text1, text2) expect_error((w), (call), (code), (text1), (text2), __LINE__)
+
+/* A NULL argument names the function and the parameter (pg_world_last_error); a NULL
+ * world has nowhere to keep a message and only returns PG_ERR_NULL. */
+static void test_query_null_messages(void **state)
+{
+    test_world t = make_world(8, 8, 16);
+    pg_world *w = t.w;
+    pg_body_def bd = pg_default_body_def();
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id id, out[4];
+    pg_geometry g;
+    pg_aabb box;
+    pg_vec2 p = pg_v2(PG_FIX_C(7), PG_FIX_C(7));
+    uint32_t count = 5;
+    (void)state;
+    assert_int_equal(pg_make_ball(w, &bd, &sd, PG_FIX_ONE, &id), PG_OK);
+    assert_int_equal(pg_geometry_box(PG_FIX_HALF, PG_FIX_HALF, pg_v2_zero(), 0, &g), PG_OK);
+    box.lo = pg_v2(-PG_FIX_ONE, -PG_FIX_ONE);
+    box.hi = pg_v2(PG_FIX_ONE, PG_FIX_ONE);
+    EXPECT_ERROR(w, pg_world_query_point(w, pg_v2_zero(), out, 4, NULL), PG_ERR_NULL, "pg_world_query_point", "count is NULL");
+    EXPECT_ERROR(w, pg_world_query_point(w, pg_v2_zero(), NULL, 4, &count), PG_ERR_NULL, "pg_world_query_point", "out is NULL");
+    assert_int_equal(count, 0);
+    EXPECT_ERROR(w, pg_world_query_aabb(w, box, out, 4, NULL), PG_ERR_NULL, "pg_world_query_aabb", "count is NULL");
+    EXPECT_ERROR(w, pg_world_query_aabb(w, box, NULL, 3, &count), PG_ERR_NULL, "pg_world_query_aabb", "out is NULL");
+    EXPECT_ERROR(w, pg_world_query_geometry(w, NULL, pg_v2_zero(), 0, out, 4, &count), PG_ERR_NULL, "pg_world_query_geometry", "geometry is NULL");
+    EXPECT_ERROR(w, pg_world_query_geometry(w, &g, pg_v2_zero(), 0, out, 4, NULL), PG_ERR_NULL, "pg_world_query_geometry", "count is NULL");
+    EXPECT_ERROR(w, pg_world_query_geometry(w, &g, pg_v2_zero(), 0, NULL, 4, &count), PG_ERR_NULL, "pg_world_query_geometry", "out is NULL");
+    EXPECT_ERROR(w, pg_world_find_free_position(w, NULL, pg_v2_zero(), 0, PG_FIX_ONE, PG_FIX_HALF, &p), PG_ERR_NULL, "pg_world_find_free_position", "geometry is NULL");
+    EXPECT_ERROR(w, pg_world_find_free_position(w, &g, pg_v2_zero(), 0, PG_FIX_ONE, PG_FIX_HALF, NULL), PG_ERR_NULL, "pg_world_find_free_position", "out is NULL");
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2_zero(), pg_v2(PG_FIX_ONE, 0), NULL), PG_ERR_NULL, "pg_world_raycast", "hit is NULL");
+    /* capacity 0 with a NULL array is the way to only count */
+    assert_int_equal(pg_world_query_point(w, pg_v2_zero(), NULL, 0, &count), PG_OK);
+    assert_int_equal(count, 1);
+    assert_true(pg_v2_equal(p, pg_v2(PG_FIX_C(7), PG_FIX_C(7)))); /* untouched by the failures */
+    free_world(&t);
+}
+
+/* PG_ERR_NOT_FOUND is an answer, but like every result other than PG_OK it sets
+ * pg_world_last_error (a message left over from an earlier call would mislead). */
+static void test_not_found_messages(void **state)
+{
+    test_world t = make_world(8, 8, 16);
+    pg_world *w = t.w;
+    pg_body_def bd = pg_default_body_def();
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id id;
+    pg_geometry big;
+    pg_ray_hit hit;
+    pg_vec2 p = pg_v2(PG_FIX_C(7), PG_FIX_C(7));
+    (void)state;
+    assert_int_equal(pg_make_wall(w, &bd, &sd, PG_FIX_C(20), PG_FIX_C(2), &id), PG_OK);
+    assert_int_equal(pg_geometry_box(PG_FIX_C(30), PG_FIX_C(30), pg_v2_zero(), 0, &big), PG_OK);
+    /* an earlier failure, whose message must not survive */
+    assert_int_equal(pg_world_raycast(w, pg_v2_zero(), pg_v2_zero(), &hit), PG_ERR_INVALID_ARGUMENT);
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2(0, PG_FIX_C(100)), pg_v2(0, PG_FIX_ONE), &hit), PG_ERR_NOT_FOUND, "pg_world_raycast", "no shape");
+    EXPECT_ERROR(w, pg_world_find_free_position(w, &big, pg_v2_zero(), 0, PG_FIX_ONE, PG_FIX_HALF, &p), PG_ERR_NOT_FOUND,
+                 "pg_world_find_free_position", "max_distance 1 m");
+    assert_true(pg_v2_equal(p, pg_v2(PG_FIX_C(7), PG_FIX_C(7)))); /* *out is left alone */
+    free_world(&t);
+}
+
+/* The query geometry passes the checks pg_shape_create makes, with the same result. */
+static void test_query_geometry_validates(void **state)
+{
+    test_world t = make_world(8, 8, 16);
+    pg_world *w = t.w;
+    pg_body_def bd = pg_default_body_def();
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id ground, out[4];
+    pg_shape_id sid;
+    pg_geometry g[6];
+    pg_vec2 p = pg_v2(PG_FIX_C(7), PG_FIX_C(7));
+    uint32_t count;
+    int i, k;
+    (void)state;
+    assert_int_equal(pg_make_wall(w, &bd, &sd, PG_FIX_C(20), PG_FIX_C(2), &ground), PG_OK); /* y -1..1 */
+    memset(g, 0, sizeof g);
+    g[0].kind = (pg_shape_kind)42; /* no such kind */
+    g[0].count = 8;
+    for (i = 0; i < 8; ++i) g[0].vertices[i] = pg_v2(i & 1 ? PG_FIX_MAX : PG_FIX_MIN, i & 2 ? PG_FIX_MAX : PG_FIX_MIN);
+    g[0].radius = PG_FIX_MAX;
+    g[1].kind = PG_SHAPE_CIRCLE; /* negative radius */
+    g[1].count = 1;
+    g[1].radius = -PG_FIX_C(5);
+    g[2].kind = PG_SHAPE_POLYGON; /* self-crossing (a bow tie) */
+    g[2].count = 4;
+    g[2].vertices[0] = pg_v2(0, 0);
+    g[2].vertices[1] = pg_v2(PG_FIX_ONE, PG_FIX_ONE);
+    g[2].vertices[2] = pg_v2(PG_FIX_ONE, 0);
+    g[2].vertices[3] = pg_v2(0, PG_FIX_ONE);
+    g[3].kind = PG_SHAPE_POLYGON; /* clockwise */
+    g[3].count = 3;
+    g[3].vertices[0] = pg_v2(0, 0);
+    g[3].vertices[1] = pg_v2(0, PG_FIX_ONE);
+    g[3].vertices[2] = pg_v2(PG_FIX_ONE, 0);
+    g[4].kind = PG_SHAPE_CIRCLE; /* a circle of 100 m: beyond the envelope */
+    g[4].count = 1;
+    g[4].radius = PG_FIX_C(100);
+    g[5].kind = PG_SHAPE_POLYGON; /* count 9 */
+    g[5].count = 9;
+    for (k = 0; k < 6; ++k) {
+        pg_body_def dyn = dynamic_at(0, 5);
+        pg_body_id b;
+        pg_result want;
+        assert_int_equal(pg_body_create(w, &dyn, &b), PG_OK);
+        want = pg_shape_create(w, b, &sd, &g[k], &sid);
+        assert_int_not_equal(want, PG_OK);
+        assert_int_equal(pg_body_destroy(w, b), PG_OK);
+        count = 77;
+        out[0].index = 99;
+        EXPECT_ERROR(w, pg_world_query_geometry(w, &g[k], pg_v2_zero(), 0, out, 4, &count), want, "pg_world_query_geometry", "geometry");
+        PG_EXPECT_EQ(count, 0, "geometry %d", k);
+        PG_EXPECT_EQ(out[0].index, 99, "geometry %d", k);
+        EXPECT_ERROR(w, pg_world_find_free_position(w, &g[k], pg_v2_zero(), 0, PG_FIX_ONE, PG_FIX_HALF, &p), want,
+                     "pg_world_find_free_position", "geometry");
+        assert_true(pg_v2_equal(p, pg_v2(PG_FIX_C(7), PG_FIX_C(7))));
+    }
+    /* a valid one still works */
+    assert_int_equal(pg_geometry_circle(pg_v2_zero(), PG_FIX_HALF, &g[0]), PG_OK);
+    assert_int_equal(pg_world_query_geometry(w, &g[0], pg_v2_zero(), 0, out, 4, &count), PG_OK);
+    assert_int_equal(count, 1);
+    assert_true(pg_body_id_equal(out[0], ground));
+    free_world(&t);
+}
+
+/* Rays are checked against the envelope: both ends within +-1000 m. */
+static void test_raycast_envelope(void **state)
+{
+    test_world t = make_world(8, 8, 16);
+    pg_world *w = t.w;
+    pg_body_def bd = pg_default_body_def();
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id ball;
+    pg_ray_hit hit;
+    const pg_fix e = PG_FIX_C(1000);
+    (void)state;
+    bd.position = pg_v2(e, e);
+    assert_int_equal(pg_make_ball(w, &bd, &sd, PG_FIX_ONE, &ball), PG_OK);
+    /* the audit's ray: origin at the corner of the plane (UBSan: collide.c pg__dist2 before) */
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2(PG_FIX_MIN, PG_FIX_MIN), pg_v2(PG_FIX_MAX, PG_FIX_MIN), &hit), PG_ERR_ENVELOPE,
+                 "pg_world_raycast", "1000 m");
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2(PG_FIX_MAX, PG_FIX_MAX), pg_v2(PG_FIX_MIN, PG_FIX_MIN), &hit), PG_ERR_ENVELOPE,
+                 "pg_world_raycast", "origin");
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2(INT32_MIN, 0), pg_v2(PG_FIX_ONE, 0), &hit), PG_ERR_ENVELOPE, "pg_world_raycast", "origin");
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2(e + 1, 0), pg_v2(-PG_FIX_ONE, 0), &hit), PG_ERR_ENVELOPE, "pg_world_raycast", "origin");
+    /* the end too */
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2(0, 0), pg_v2(e + 1, 0), &hit), PG_ERR_ENVELOPE, "pg_world_raycast", "end");
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2(-e, -e), pg_v2(PG_FIX_MAX, PG_FIX_MAX), &hit), PG_ERR_ENVELOPE, "pg_world_raycast", "end");
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2(0, 0), pg_v2(0, INT32_MIN), &hit), PG_ERR_ENVELOPE, "pg_world_raycast", "end");
+    /* corner to corner is legal and hits the ball at (1000, 1000) */
+    assert_int_equal(pg_world_raycast(w, pg_v2(-e, -e), pg_v2(2 * e, 2 * e), &hit), PG_OK);
+    assert_true(pg_body_id_equal(hit.body, ball));
+    assert_true(fabs(fd(hit.fraction) - (1.0 - 1.0 / (2000.0 * sqrt(2.0)))) < 1e-4);
+    assert_true(fabs(fd(hit.point.x) - (1000.0 - sqrt(0.5))) < 1e-3);
+    assert_true(fabs(fd(hit.normal.x) + sqrt(0.5)) < 1e-3);
+    /* and along the edge of the envelope, missing it */
+    EXPECT_ERROR(w, pg_world_raycast(w, pg_v2(-e, -e), pg_v2(2 * e, 0), &hit), PG_ERR_NOT_FOUND, "pg_world_raycast", NULL);
+    free_world(&t);
+}
+
+/* Bodies may fly out of the envelope (their positions saturate at +-32768 m): queries
+ * near them and legal rays elsewhere stay defined (UBSan: collide.c pg__dist2 before). */
+static void test_queries_with_far_body(void **state)
+{
+    pg_world_def d = pg_default_world_def();
+    test_world t;
+    pg_world *w;
+    pg_body_def bd = dynamic_at(1000, 1000);
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id flyer, mid, other, box_flyer, out[4];
+    pg_ray_hit hit;
+    pg_geometry g;
+    pg_vec2 c, cb;
+    uint32_t count;
+    int i;
+    (void)state;
+    d.max_bodies = 8;
+    d.max_shapes = 8;
+    d.max_contacts = 16;
+    d.gravity = pg_v2_zero();
+    d.max_linear_speed = PG_FIX_C(4096);
+    t = make_world_def(&d);
+    w = t.w;
+    bd.linear_velocity = pg_v2(PG_FIX_C(2800), PG_FIX_C(2800));
+    assert_int_equal(pg_make_ball(w, &bd, &sd, PG_FIX_ONE, &flyer), PG_OK);
+    bd = dynamic_at(-1000, 1000);
+    bd.linear_velocity = pg_v2(-PG_FIX_C(2000), 0); /* 12 s later: x = -25000 m */
+    bd.angular_velocity = PG_FIX_C(3);
+    assert_int_equal(pg_make_box(w, &bd, &sd, PG_FIX_C(4), PG_FIX_C(2), &box_flyer), PG_OK);
+    bd = dynamic_at(-900, -1000);
+    bd.linear_velocity = pg_v2(PG_FIX_C(2400), 0); /* 12 s later: x = 27900 m */
+    assert_int_equal(pg_make_capsule(w, &bd, &sd, PG_FIX_C(4), PG_FIX_ONE, &mid), PG_OK);
+    bd = pg_default_body_def();
+    bd.position = pg_v2(PG_FIX_C(-990), PG_FIX_C(-1000));
+    assert_int_equal(pg_make_ball(w, &bd, &sd, PG_FIX_ONE, &other), PG_OK);
+    for (i = 0; i < 720; ++i) assert_int_equal(pg_world_step(w), PG_OK);
+    c = pg_body_position(w, flyer);
+    assert_true(c.x == PG_FIX_MAX && c.y == PG_FIX_MAX); /* saturated: 1000 + 12 * 2800 m */
+    cb = pg_body_position(w, box_flyer);
+    assert_true(cb.x < -PG_FIX_C(16000) && cb.x > PG_FIX_MIN && fabs(fd(cb.y) - 1000.0) < 1.0);
+    assert_true(pg_body_position(w, mid).x > PG_FIX_C(20000));
+
+    /* the audit's ray: from (-1000, -1000), 10 m along x: reaches the static ball at -990 */
+    assert_int_equal(pg_world_raycast(w, pg_v2(PG_FIX_C(-1000), PG_FIX_C(-1000)), pg_v2(PG_FIX_C(10), 0), &hit), PG_OK);
+    assert_true(pg_body_id_equal(hit.body, other));
+    assert_true(fabs(fd(hit.fraction) - 0.9) < 1e-3);
+    /* rays over the whole envelope, every direction: the far bodies are never hit */
+    for (i = 0; i < 64; ++i) {
+        double a = 2.0 * PGT_PI * i / 64.0;
+        pg_result r = pg_world_raycast(w, pg_v2(fx(999.0 * cos(a)), fx(999.0 * sin(a))), pg_v2(fx(-1998.0 * cos(a)), fx(-1998.0 * sin(a))), &hit);
+        assert_true(r == PG_OK || r == PG_ERR_NOT_FOUND);
+        if (r == PG_OK) assert_true(pg_body_id_equal(hit.body, other));
+    }
+    /* queries at the far bodies find them (and nothing overflows); the saturated one has
+     * lost its shape, so only "not something else" is certain about it */
+    assert_int_equal(pg_world_query_point(w, c, out, 4, &count), PG_OK);
+    assert_true(count == 0 || (count == 1 && pg_body_id_equal(out[0], flyer)));
+    assert_int_equal(pg_world_query_point(w, cb, out, 4, &count), PG_OK);
+    assert_int_equal(count, 1);
+    assert_true(pg_body_id_equal(out[0], box_flyer));
+    assert_int_equal(pg_world_query_point(w, pg_body_position(w, mid), out, 4, &count), PG_OK);
+    assert_int_equal(count, 1);
+    assert_true(pg_body_id_equal(out[0], mid));
+    assert_int_equal(pg_geometry_box(PG_FIX_C(50), PG_FIX_C(50), pg_v2_zero(), 0, &g), PG_OK);
+    assert_int_equal(pg_world_query_geometry(w, &g, pg_v2(PG_FIX_MAX, PG_FIX_MAX), PG_ANGLE_QUARTER / 2, out, 4, &count), PG_OK);
+    assert_true(count == 0 || (count == 1 && pg_body_id_equal(out[0], flyer)));
+    assert_int_equal(pg_world_query_geometry(w, &g, pg_body_position(w, mid), 777u, out, 4, &count), PG_OK);
+    assert_int_equal(count, 1);
+    assert_true(pg_body_id_equal(out[0], mid));
+    assert_int_equal(pg_world_query_geometry(w, &g, cb, 12345u, out, 4, &count), PG_OK);
+    assert_int_equal(count, 1);
+    assert_true(pg_body_id_equal(out[0], box_flyer));
+    assert_int_equal(pg_world_query_point(w, pg_v2(PG_FIX_MIN, PG_FIX_MAX), out, 4, &count), PG_OK);
+    assert_int_equal(count, 0);
+    free_world(&t);
+}
+
 /* ---- world settings ----------------------------------------------------------------------------------- */
 static void test_world_settings(void **state)
 {
@@ -1076,6 +1331,11 @@ int main(void)
         cmocka_unit_test(test_query_point_and_aabb),
         cmocka_unit_test(test_query_geometry_and_free_position),
         cmocka_unit_test(test_raycast),
+        cmocka_unit_test(test_query_null_messages),
+        cmocka_unit_test(test_not_found_messages),
+        cmocka_unit_test(test_query_geometry_validates),
+        cmocka_unit_test(test_raycast_envelope),
+        cmocka_unit_test(test_queries_with_far_body),
         cmocka_unit_test(test_world_settings),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
