@@ -46,12 +46,18 @@
 #else
 #define PG__INLINE_PASS static inline
 #endif
+#if defined(__GNUC__) || defined(__clang__)
+#define PG__NOINLINE static __attribute__((noinline))
+#else
+#define PG__NOINLINE static
+#endif
 
 typedef struct solver_body {
     pg_vec2 v;
     pg_fix w;
     pg_vec2 c0, c;        /* centre at the start of the step, and now */
-    pg_vec2 dp;           /* c - c0: |.| <= substeps * VELOCITY_MAX h < 2^24, fits */
+    pg_vec2 dp;           /* c - c0: |.| <= VELOCITY_MAX / step_hz + 9 <= 2^29 + 9 (a step
+                             lasts at most 1 s), fits */
     pg_angle a0, a;
     pg_rot dq;            /* rotation from a0 to a; kept only when turns_anchors */
     int32_t turns_anchors;/* some contact anchor on this body turns with it (not a centred
@@ -191,10 +197,44 @@ static inline int64_t mul_q16(int64_t a, pg_fix c)
     return (a < 0) != (c < 0) ? -(int64_t)r : (int64_t)r;
 }
 
+/* row_coefficients for a row whose K does not fit int64: K, tA and tB scaled by 2^-s.
+ * invI c^2 / 2^32 < 2^(bits(invI) + 2 bits(c) - 32) =: 2^(b - 32); with s = b - 92 each
+ * scaled term is below 2^60 and K below 2^62. b >= 94 here (a term or the sum passed
+ * 2^62), so s >= 2; and s <= 63 + 64 - 92 = 35. gA, gB are ratios of values scaled
+ * alike; kA = invm_A / (K 2^s), so for kA, kB and for k_ratio, which compares two rows,
+ * the scale joins the denominator's shift (inverse masses are below 2^54: past a shift
+ * of 62 their ratio rounds to 0). */
+PG__NOINLINE denominator row_coefficients_scaled(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d,
+                                                 int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
+{
+    int bA = pg__bit_length64((uint64_t)A->inv_inertia) + 2 * pg__bit_length64(pg__mag64(cA));
+    int bB = pg__bit_length64((uint64_t)B->inv_inertia) + 2 * pg__bit_length64(pg__mag64(cB));
+    int s = (bA > bB ? bA : bB) - 92;
+    int64_t tA = pg__mul64_shr(A->inv_inertia, cA, 16 + s), tB = pg__mul64_shr(B->inv_inertia, cB, 16 + s);
+    int64_t K = pg__round_shift64(A->inv_mass + B->inv_mass, s) + mul_q16(tA, cA) + mul_q16(tB, cB);
+    denominator den = make_denominator(K);
+    int32_t kA, kB;
+    *gA = tA != 0 ? ratio_q(tA, den, 24) : 0;
+    *gB = tB != 0 ? ratio_q(tB, den, 24) : 0;
+    den.shift += s;
+    kA = den.shift > 62 ? 0 : ratio_q(A->inv_mass, den, 30);
+    kB = den.shift > 62 ? 0 : ratio_q(B->inv_mass, den, 30);
+    *lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
+    *lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
+    *lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
+    *lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
+    return den;
+}
+
 /* Coefficients of one row (normal or tangent) for one point; returns the row's
  * normalised denominator. gA = invI_A (rA x d) / K is bounded by 1 / (2 k) for the
  * radius of gyration k >= 2^-8 m, which body.c makes a condition of a rotating body
- * (pg__mass_data_problem), so it fits Q8.24. */
+ * (pg__mass_data_problem), so it fits Q8.24.
+ * K itself need not fit int64: invI (r x d)^2 reaches 2^63 (Q38) for a ball of radius
+ * 0.025 m and density 0.1 (invI = 1.6e7) at a lever arm of 1.44 m, which a massless
+ * segment on the same body provides (the envelope allows 50 m). Such a row is computed
+ * with every term scaled down (row_coefficients_scaled); a row whose K fits int64 is
+ * computed as before. */
 static denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation,
                                     int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
 {
@@ -202,9 +242,15 @@ static denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix c
     int32_t kA, kB;
     denominator den;
     if (rotation) {
+        int64_t qA, qB;
         tA = mul_q16(A->inv_inertia, cA); /* invI (r x d): Q38 per metre */
         tB = mul_q16(B->inv_inertia, cB);
-        K += mul_q16(tA, cA) + mul_q16(tB, cB);
+        qA = mul_q16(tA, cA); /* >= 0; INT64_MAX when tA saturated (then |c| >= 1 m) */
+        qB = mul_q16(tB, cB);
+        /* K < 2^54 and qA, qB >= 0: below 2^61 each, the sum fits; else test exactly */
+        if (((uint64_t)qA | (uint64_t)qB) >= (UINT64_C(1) << 61) && (qA > INT64_MAX - K || qB > INT64_MAX - K - qA))
+            return row_coefficients_scaled(A, B, cA, cB, d, lA_x, lA_y, lB_x, lB_y, gA, gB);
+        K += qA + qB;
     }
     den = make_denominator(K);
     kA = ratio_q(A->inv_mass, den, 30);
@@ -233,7 +279,8 @@ static int centred_circle(const pg_world *w, uint32_t shape, uint32_t body)
 typedef struct step_context {
     uint32_t n;              /* substeps per second */
     int64_t h_q32;           /* substep in Q32 seconds */
-    int64_t angle_per_w;     /* binary-angle units per (rad/s) per substep, Q8 */
+    int64_t angle_per_w;     /* binary-angle units per (rad/s) per substep, Q8: w angle_per_w
+                                is the turn in Q56 (see angle_step) */
     softness soft, soft_static;
     pg_fix push_max;
     uint32_t effects;
@@ -247,9 +294,11 @@ typedef struct step_context {
  *   accumulated lambdas are kept within +-LAMBDA_MAX = 2^27 (2048 m/s of velocity change,
  *   far beyond anything the envelope produces), so one row changes a linear velocity
  *   by at most 2^28 (|k n| <= 1) and an angular one by 2^28 * 2^7 (|g| < 128 / m);
- *   stored velocities are within +-VELOCITY_MAX = 2^29 (8192 m/s, rad/s), so after the
- *   at most 4 rows of a constraint |v| < 2^31 and every product below fits in int64
- *   (d . dv < 2^30 * 2^32, w (r x d) < 2^38 * 2^23). */
+ *   stored velocities are within +-VELOCITY_MAX = 2^29 (8192 m/s, rad/s; an angular
+ *   velocity just integrated from a saturated torque within +-2^31), so after the at
+ *   most 4 rows of a constraint |v| < 2^31 and every product below fits in int64
+ *   (d . dv < 2^30 * 2^32, w (r x d) < 2^38 * 2^23) but for the soft row's mass scale
+ *   times the relative speed, which has the wide path of mass_scale_times. */
 #define LAMBDA_MAX (INT64_C(1) << 27)
 #define VELOCITY_MAX (INT64_C(1) << 29)
 
@@ -353,6 +402,19 @@ PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point 
     p->tangent_impulse = (pg_fix)acc;
 }
 
+/* round(m x / 2^30) for the soft mass scale 0 <= m < 2^30 and a relative speed x (Q16.16
+ * m/s). x is not bounded by 2^33, where m x would leave int64: an anchor far from a
+ * fast-turning body's centre moves at w (r x n), 8192 rad/s (VELOCITY_MAX) times 16.5 m
+ * already 2^33 (and up to 32768 rad/s times 50 m, 2^36.6, right after a saturated
+ * torque). Beyond 2^33 the 128-bit product, rounded the same way (nearest, ties away from
+ * zero). Out of line, the rare path costs the row one unsigned comparison. */
+PG__NOINLINE int64_t mass_scale_times_wide(int32_t m, int64_t x) { return pg__mul64_shr(m, x, 30); }
+static inline int64_t mass_scale_times(int32_t m, int64_t x)
+{
+    if ((uint64_t)x + (UINT64_C(1) << 33) < (UINT64_C(1) << 34)) return pg__round_shift64(m * x, 30);
+    return mass_scale_times_wide(m, x);
+}
+
 /* One normal row, soft (use_bias) or rigid (relax), speculative where the gap is open. */
 PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft, const constraint *c, const solver_body *A,
                                 const solver_body *B, velocity *va, velocity *vb, constraint_point *p, int use_bias, int linear)
@@ -376,7 +438,7 @@ PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft,
     } else if (use_bias) {
         int64_t bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
         if (bias < -ctx->push_max) bias = -ctx->push_max;
-        acc = (int64_t)p->normal_impulse - pg__round_shift64(soft->mass_scale * (rel + bias), 30) -
+        acc = (int64_t)p->normal_impulse - mass_scale_times(soft->mass_scale, rel + bias) -
               pg__round_shift64((int64_t)soft->impulse_scale * p->normal_impulse, 30);
     } else {
         acc = (int64_t)p->normal_impulse - rel;
@@ -453,6 +515,71 @@ static void restitution(constraint *c, solver_body *bodies, pg_fix threshold)
     store_velocity(B, &vb);
 }
 
+/* The gravity term g (a pg_fix) plus the force term f = round(F invm), which
+ * pg__mul64_shr may have saturated to +-INT64_MAX: the exact sum when |f| <= 2^62, else
+ * g + sign(f) 2^62. Either way pg__sat64 of the result is the exact sum saturated to
+ * +-PG_FIX_MAX (beyond 2^62 - 2^31 both are past PG_FIX_MAX on the same side). */
+static int64_t add_force_term(int64_t g, int64_t f)
+{
+    const int64_t lim = INT64_C(1) << 62;
+    return g + (f > lim ? lim : f < -lim ? -lim : f);
+}
+
+/* The binary angle a substep at angular velocity w turns: round(w angle_per_w / 2^24)
+ * modulo 2^32 (a full turn), rounded as pg__round_shift64 does (nearest, ties away from
+ * zero). w angle_per_w reaches 2^31 * 2^37.4 at step_hz * substeps = 1, past int64 once
+ * |w| > 2^63 / angle_per_w (about 789 n rad/s, n = step_hz * substeps). But a full turn is
+ * 2^56 in the product, so only the product modulo 2^56 matters: the unsigned product
+ * (modulo 2^64) and the rounding offset added modulo 2^64 give exactly the low 32 bits of
+ * the rounded quotient, for every w, and the same bits as the int64 formula wherever that
+ * did not overflow. angle_per_w > 0, so the product has w's sign. */
+static inline pg_angle angle_step(pg_fix w, int64_t angle_per_w)
+{
+    uint64_t p = (uint64_t)(int64_t)w * (uint64_t)angle_per_w;
+    return (pg_angle)((p + (w < 0 ? UINT64_C(0x7FFFFF) : UINT64_C(0x800000))) >> 24);
+}
+
+/* Integrate velocities in substep sub. The velocity change of substep k is
+ * round(a t_(k+1)) - round(a t_k), t_k = k h: the rounding errors do not add up over the
+ * substeps, a step changes velocity by round(a dt) exactly.
+ * a is a pg_fix and t_k stays below 2^32 Q32 s but at the end of a 1 Hz step, where
+ * h = round(2^32 / substeps) rounds up for 6, 7, 10 and 13 substeps and t_n reaches
+ * 2^32 + 8: a t_n and its rounding then leave int64 for |a| near PG_FIX_MAX. For
+ * t = 2^32 + r, round(a t / 2^32) = a + round(a r / 2^32), exactly and rounded the same
+ * way (a 2^32 and a r have a's sign); a r stays below (2^31 - 1)(2^32 - 1).
+ * Out of line: pg__solve is at the edge of what gcc inlines into it, and with this loop
+ * inside, the few instructions of the whole-second term made gcc 12 leave solve_normal
+ * out of line (callgrind, awake pyramid: 1.3 % more instructions). */
+#define TIME_ONE (INT64_C(1) << 32)
+PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const uint32_t *active, uint32_t n_active,
+                                       const step_context *ctx, uint32_t sub, int rotation)
+{
+    int64_t t0 = ctx->h_q32 * (int64_t)sub, t1 = ctx->h_q32 * (int64_t)(sub + 1u); /* <= 2^32 / step_hz + 8 */
+    int64_t whole = 0; /* 1 when t1 >= 2^32 (see TIME_ONE); t0 < 2^32 always */
+    uint32_t i;
+    if (t1 >= TIME_ONE) {
+        t1 -= TIME_ONE;
+        whole = 1;
+    }
+    for (i = 0; i < n_active; ++i) {
+        solver_body *sb = &bodies[active[i]];
+        if (sb->accel.x != 0 || sb->accel.y != 0) {
+            int64_t vx = (int64_t)sb->v.x + whole * sb->accel.x + pg__round_shift64(sb->accel.x * t1, 32) - pg__round_shift64(sb->accel.x * t0, 32);
+            int64_t vy = (int64_t)sb->v.y + whole * sb->accel.y + pg__round_shift64(sb->accel.y * t1, 32) - pg__round_shift64(sb->accel.y * t0, 32);
+            sb->v = pg__clamp_speed(w, pg_v2(pg__sat64(vx), pg__sat64(vy)));
+        }
+        if (sb->lin_damp != PG_ROT_ONE) {
+            sb->v.x = pg__mul_q30(sb->v.x, sb->lin_damp);
+            sb->v.y = pg__mul_q30(sb->v.y, sb->lin_damp);
+        }
+        if (rotation) {
+            if (sb->alpha != 0)
+                sb->w = pg__sat64((int64_t)sb->w + whole * sb->alpha + pg__round_shift64(sb->alpha * t1, 32) - pg__round_shift64(sb->alpha * t0, 32));
+            if (sb->ang_damp != PG_ROT_ONE) sb->w = pg__mul_q30(sb->w, sb->ang_damp);
+        }
+    }
+}
+
 void pg__solve(pg_world *w)
 {
     unsigned char *scratch = (unsigned char *)w->solver_scratch;
@@ -514,8 +641,10 @@ void pg__solve(pg_world *w)
                 ay = pg_fix_mul(w->def.gravity.y, b->gravity_scale);
             }
             if (b->force_x != 0 || b->force_y != 0) {
-                ax += pg__mul64_shr(b->force_x, b->inv_mass, 38);
-                ay += pg__mul64_shr(b->force_y, b->inv_mass, 38);
+                /* the force term saturates (to +-INT64_MAX) for an accumulated force far
+                 * beyond the envelope on a light body: add it saturating */
+                ax = add_force_term(ax, pg__mul64_shr(b->force_x, b->inv_mass, 38));
+                ay = add_force_term(ay, pg__mul64_shr(b->force_y, b->inv_mass, 38));
             }
             if (rotation && b->torque != 0) alpha = pg__mul64_shr(b->torque, b->inv_inertia, 38);
             sb->accel = pg_v2(pg__sat64(ax), pg__sat64(ay));
@@ -603,27 +732,7 @@ void pg__solve(pg_world *w)
 
     for (sub = 0; sub < w->def.substeps; ++sub) {
         int order = (int)(sub & 1u);
-        /* integrate velocities. The velocity change of substep k is
-         * round(a t_(k+1)) - round(a t_k), t_k = k h: the rounding errors do not add up
-         * over the substeps, a step changes velocity by round(a dt) exactly. */
-        int64_t t0 = ctx.h_q32 * (int64_t)sub, t1 = ctx.h_q32 * (int64_t)(sub + 1u); /* <= 2^32 / step_hz */
-        for (i = 0; i < n_active; ++i) {
-            solver_body *sb = &bodies[active[i]];
-            if (sb->accel.x != 0 || sb->accel.y != 0) {
-                int64_t vx = (int64_t)sb->v.x + pg__round_shift64(sb->accel.x * t1, 32) - pg__round_shift64(sb->accel.x * t0, 32);
-                int64_t vy = (int64_t)sb->v.y + pg__round_shift64(sb->accel.y * t1, 32) - pg__round_shift64(sb->accel.y * t0, 32);
-                sb->v = pg__clamp_speed(w, pg_v2(pg__sat64(vx), pg__sat64(vy)));
-            }
-            if (sb->lin_damp != PG_ROT_ONE) {
-                sb->v.x = pg__mul_q30(sb->v.x, sb->lin_damp);
-                sb->v.y = pg__mul_q30(sb->v.y, sb->lin_damp);
-            }
-            if (rotation) {
-                if (sb->alpha != 0)
-                    sb->w = pg__sat64((int64_t)sb->w + pg__round_shift64(sb->alpha * t1, 32) - pg__round_shift64(sb->alpha * t0, 32));
-                if (sb->ang_damp != PG_ROT_ONE) sb->w = pg__mul_q30(sb->w, sb->ang_damp);
-            }
-        }
+        integrate_velocities(w, bodies, active, n_active, &ctx, sub, rotation);
         for (i = 0; i < n_cons; ++i) warm_start(&cons[i], bodies);
         ctx.separation_cached = sub > 0;
         for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, &cons[i], bodies, 1, order);
@@ -634,7 +743,7 @@ void pg__solve(pg_world *w)
             sb->c.y = pg__sat64((int64_t)sb->c.y + pg__round_shift64((int64_t)sb->v.y * ctx.h_q32, 32));
             sb->dp = pg_v2((pg_fix)((int64_t)sb->c.x - sb->c0.x), (pg_fix)((int64_t)sb->c.y - sb->c0.y));
             if (rotation && sb->w != 0) {
-                sb->a += (pg_angle)(uint64_t)pg__round_shift64((int64_t)sb->w * ctx.angle_per_w, 24);
+                sb->a += angle_step(sb->w, ctx.angle_per_w);
                 if (sb->turns_anchors) sb->dq = pg_rot_from_angle(sb->a - sb->a0); /* a ball's is never read */
             }
         }

@@ -918,6 +918,357 @@ static void test_without_continuous_bullet_tunnels(void **state)
     }
 }
 
+/* ---- saturation and low step rates --------------------------------------------------------------- */
+/* The solver's integration, restated exactly (src/solver.c): n = step_hz * substeps
+ * substeps per second, h = round(2^32 / n) (Q32 s); in substep k (t_k = k h) velocity
+ * changes by round(a t_(k+1) / 2^32) - round(a t_k / 2^32), and the angle by the binary
+ * angle round(w A / 2^24) modulo 2^32 (a full turn), A = round(174992710548 / n) (2^40 /
+ * (2 pi) per substep). Rounding is to nearest, ties away from zero. These products leave
+ * int64 at step_hz 1: the expectations below are computed in 128 bits. */
+static pgt_i128 round_shift128(pgt_i128 x, int n) { return (x + ((pgt_i128)1 << (n - 1)) - (x < 0)) >> n; }
+static int64_t substep_q32(uint32_t step_hz, uint32_t substeps)
+{
+    const int64_t n = (int64_t)step_hz * substeps;
+    return ((INT64_C(1) << 32) + n / 2) / n;
+}
+static pg_angle turn_of_substep(pg_fix w, uint32_t step_hz, uint32_t substeps)
+{
+    const int64_t n = (int64_t)step_hz * substeps, A = (INT64_C(174992710548) + n / 2) / n;
+    return (pg_angle)(uint64_t)round_shift128((pgt_i128)w * A, 24);
+}
+static pg_fix sat128(pgt_i128 x) { return x > PG_FIX_MAX ? PG_FIX_MAX : x < PG_FIX_MIN ? PG_FIX_MIN : (pg_fix)x; }
+/* x - y as a signed binary angle, in units of 2^-32 turn */
+static int64_t angle_diff(pg_angle x, pg_angle y)
+{
+    uint32_t d = (uint32_t)(x - y);
+    return d < 0x80000000u ? (int64_t)d : (int64_t)d - (INT64_C(1) << 32);
+}
+/* How far one substep's binary angle may be from the exact turn of w (raw Q16.16), in
+ * units of 2^-32 turn: A is within 0.5 + 0.14 / n of 2^40 / (2 pi n), so w A / 2^24 is
+ * within |w| 0.64 / 2^24 of the exact turn, plus half a unit of rounding. */
+static double substep_turn_tolerance(pg_fix w) { return 1.0 + fabs((double)w) * 0.65 / 16777216.0; }
+/* w for dt seconds as a signed binary angle (the turn modulo 1, within +-1/2) */
+static double turn_units(double w, double dt)
+{
+    double turns = w * dt / (2.0 * PGT_PI);
+    return (turns - floor(turns + 0.5)) * Q32;
+}
+
+/* Audit finding: a force far beyond the envelope on a light body. The force term F / m
+ * saturated (pg__mul64_shr gives INT64_MAX) and was then added to the gravity term:
+ * signed overflow (UB), and in practice the wrapped sum turned the acceleration around.
+ * Documented result: each component of the acceleration is round(g scale) +
+ * round(F / m), saturated to +-PG_FIX_MAX (32768 m/s^2). A ball of radius 0.025 m and
+ * density 0.1 (m = 1.96e-4 kg), gravity_scale -1 (gravity and force pull the same way
+ * along y), force (MAX, MAX) added 2^21 times (2^36 N per component). */
+static void test_huge_force_saturates_acceleration(void **state)
+{
+    int si;
+    (void)state;
+    for (si = 0; si < 2; ++si) {
+        const int sign = si == 0 ? 1 : -1;
+        pg_world_def d = base_def(PG_EFFECTS_ALL);
+        test_world t;
+        pg_shape_def sd = pg_default_shape_def();
+        pg_body_def bd = dynamic_at(0, 0);
+        pg_body_id ball;
+        pg_vec2 v1, v;
+        const int64_t T = 4 * substep_q32(60, 4); /* the step, Q32 s */
+        const int64_t want = sign * (int64_t)round_shift128((pgt_i128)PG_FIX_MAX * T, 32);
+        long k;
+        int i;
+        d.max_linear_speed = PG_FIX_C(4096); /* 772 m/s stays below the cap */
+        t = make_world_def(&d);
+        sd.density = fx(0.1);
+        bd.gravity_scale = sign > 0 ? -PG_FIX_ONE : PG_FIX_ONE;
+        assert_int_equal(pg_make_ball(t.w, &bd, &sd, fx(0.025), &ball), PG_OK);
+        for (k = 0; k < (1L << 21); ++k)
+            assert_int_equal(pg_body_apply_force(t.w, ball, pg_v2(sign * PG_FIX_MAX, sign * PG_FIX_MAX)), PG_OK);
+        assert_int_equal(pg_world_step(t.w), PG_OK);
+        v1 = pg_body_linear_velocity(t.w, ball);
+        /* both components accelerated at +-PG_FIX_MAX for the whole step: the gravity
+         * term does not show (the sum saturates) and does not flip the sign */
+        PG_EXPECT_EQ(v1.x, want, "force %+d * (MAX, MAX) 2^21 times: v.x after one step", sign);
+        PG_EXPECT_EQ(v1.y, want, "force %+d * (MAX, MAX) 2^21 times: v.y after one step", sign);
+        expect_near(fd(v1.y), sign * 32768.0 / 60.0, 0.01, "saturated acceleration 32768 m/s^2 for 1/60 s: v.y");
+        /* the force acted for one step only; the world keeps stepping, and gravity
+         * (times gravity_scale) keeps pulling the same way at 10 m/s^2 */
+        for (i = 1; i <= 10; ++i) {
+            assert_int_equal(pg_world_step(t.w), PG_OK);
+            v = pg_body_linear_velocity(t.w, ball);
+            PG_EXPECT_EQ(v.x, v1.x, "step %d after the force", i);
+            expect_near(fd(v.y), fd(v1.y) + sign * 10.0 * i / 60.0, 1e-3, "v.y under gravity alone after the force");
+        }
+        free_world(&t);
+    }
+}
+
+/* Audit finding: gravity 1000 m/s^2 with gravity_scale 100 saturates the acceleration to
+ * PG_FIX_MAX; at step_hz 1 the substep h = round(2^32 / substeps) rounds up for 6, 7, 10
+ * and 13 substeps, so a t_k passes 2^32 and a t_k (or its rounding) left int64. The
+ * ball reaches the speed cap (400 m/s) in the first substep and stays there; it moves
+ * substeps * round(400 h) in the step, 400 m within rounding. */
+static void test_saturated_gravity_at_one_hz(void **state)
+{
+    static const uint32_t substeps[] = {1, 4, 6, 7, 10, 13, 16};
+    size_t k;
+    int si;
+    (void)state;
+    for (k = 0; k < sizeof substeps / sizeof substeps[0]; ++k) {
+        for (si = 0; si < 2; ++si) {
+            const int sign = si == 0 ? 1 : -1;
+            pg_world_def d = base_def(PG_EFFECTS_ALL);
+            test_world t;
+            pg_shape_def sd = pg_default_shape_def();
+            pg_body_def bd = dynamic_at(0, 0);
+            pg_body_id ball;
+            const int64_t h = substep_q32(1, substeps[k]);
+            int64_t per_substep, y0;
+            int step;
+            d.step_hz = 1;
+            d.substeps = substeps[k];
+            d.gravity = pg_v2(0, sign * PG_FIX_C(1000));
+            t = make_world_def(&d);
+            bd.gravity_scale = PG_FIX_C(100);
+            assert_int_equal(pg_make_ball(t.w, &bd, &sd, PG_FIX_HALF, &ball), PG_OK);
+            per_substep = (int64_t)round_shift128((pgt_i128)d.max_linear_speed * h, 32);
+            y0 = pg_body_position(t.w, ball).y;
+            for (step = 1; step <= 2; ++step) {
+                pg_vec2 v, p;
+                assert_int_equal(pg_world_step(t.w), PG_OK);
+                v = pg_body_linear_velocity(t.w, ball);
+                p = pg_body_position(t.w, ball);
+                PG_EXPECT_EQ(v.x, 0, "step_hz 1, %u substeps, gravity %+d000 x 100", (unsigned)substeps[k], sign);
+                PG_EXPECT_EQ(v.y, sign * (int64_t)d.max_linear_speed, "step_hz 1, %u substeps, gravity %+d000 x 100: v.y at the cap", (unsigned)substeps[k], sign);
+                PG_EXPECT_EQ(p.x, 0, "step_hz 1, %u substeps, gravity %+d000 x 100", (unsigned)substeps[k], sign);
+                PG_EXPECT_EQ(p.y - y0, sign * step * (int64_t)substeps[k] * per_substep, "step_hz 1, %u substeps, gravity %+d000 x 100: y", (unsigned)substeps[k], sign);
+                expect_near(fd(p.y) - fd((pg_fix)y0), sign * 400.0 * step, 1e-3, "distance at 400 m/s for 1 s per step");
+            }
+            free_world(&t);
+        }
+    }
+}
+
+/* Audit finding: the angle integration multiplied w by A = 2^40 / (2 pi n) in int64,
+ * which overflows once |w| > about 789 n rad/s: at step_hz 1 and 1 substep already for
+ * 900 rad/s, inside the +-1000 rad/s envelope. The angle must advance by exactly the
+ * binary angle of w / n per substep, modulo a full turn, and by w / step_hz radians per
+ * step within a few units of 2^-32 turn. Sleeping is off so that the 1 LSB case keeps
+ * turning. */
+static void test_spin_at_low_step_rates(void **state)
+{
+    static const struct { uint32_t step_hz, substeps; double w; } cases[] = {
+        {1, 1, 900.0}, {1, 1, -900.0}, {1, 1, 1000.0}, {1, 1, -1000.0}, {1, 1, 1.0 / 65536.0},
+        {1, 4, 900.0}, {10, 1, 900.0}, {1, 16, -1000.0}, {2, 1, 1000.0}, {60, 4, 900.0}, {1000, 16, -1000.0},
+    };
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        pg_world_def d = base_def(PG_EFFECTS_ALL & ~(PG_EFFECT_GRAVITY | PG_EFFECT_SLEEPING));
+        test_world t;
+        pg_shape_def sd = pg_default_shape_def();
+        pg_body_def bd = dynamic_at(0, 0);
+        pg_body_id ball;
+        const pg_fix w = fx(cases[k].w);
+        const pg_angle per_step = (pg_angle)(cases[k].substeps * turn_of_substep(w, cases[k].step_hz, cases[k].substeps));
+        int step;
+        d.step_hz = cases[k].step_hz;
+        d.substeps = cases[k].substeps;
+        t = make_world_def(&d);
+        bd.angular_velocity = w;
+        assert_int_equal(pg_make_ball(t.w, &bd, &sd, PG_FIX_HALF, &ball), PG_OK);
+        for (step = 1; step <= 3; ++step) {
+            pg_angle before = pg_body_angle(t.w, ball), after;
+            char what[128];
+            assert_int_equal(pg_world_step(t.w), PG_OK);
+            after = pg_body_angle(t.w, ball);
+            PG_EXPECT_EQ(pg_body_angular_velocity(t.w, ball), w, "step_hz %u, %u substeps, w %.1f: w is kept", (unsigned)d.step_hz, (unsigned)d.substeps, cases[k].w);
+            PG_EXPECT_EQ((uint32_t)(after - before), per_step, "step_hz %u, %u substeps, w %.1f: angle per step", (unsigned)d.step_hz, (unsigned)d.substeps, cases[k].w);
+            snprintf(what, sizeof what, "step_hz %u, %u substeps, w %.1f rad/s: turn per step (2^-32 turn)", (unsigned)d.step_hz, (unsigned)d.substeps, cases[k].w);
+            expect_near((double)angle_diff(after, before), turn_units(fd(w), 1.0 / d.step_hz), d.substeps * substep_turn_tolerance(w), what);
+        }
+        free_world(&t);
+    }
+}
+
+/* A saturated torque (PG_FIX_MAX on a ball of I = 0.098 kg m^2: alpha saturates at
+ * 32768 rad/s^2) at low step rates: the solver spins the ball far past 789 n rad/s
+ * (1/4 and 10/1 reach the 8192 rad/s the solver clamps to; 1/7 and 1/13 also pass 2^32
+ * in a t_k). w and the angle must follow the integration above exactly, and the angle
+ * must be the turn of those w within a few units of 2^-32 turn per substep. */
+static void test_saturated_torque_at_low_step_rates(void **state)
+{
+    static const struct { uint32_t step_hz, substeps; } cases[] = {{1, 4}, {10, 1}, {1, 7}, {1, 13}, {1, 1}, {2, 16}};
+    size_t k;
+    int si;
+    (void)state;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        for (si = 0; si < 2; ++si) {
+            const int sign = si == 0 ? 1 : -1;
+            pg_world_def d = base_def(PG_EFFECTS_ALL & ~(PG_EFFECT_GRAVITY | PG_EFFECT_SLEEPING));
+            test_world t;
+            pg_shape_def sd = pg_default_shape_def();
+            pg_body_def bd = dynamic_at(0, 0);
+            pg_body_id ball;
+            const uint32_t s = cases[k].substeps, hz = cases[k].step_hz;
+            const int64_t h = substep_q32(hz, s);
+            const pg_fix alpha = sign * PG_FIX_MAX;
+            pg_fix w_model = 0;
+            pg_angle a_model;
+            int step;
+            d.step_hz = hz;
+            d.substeps = s;
+            t = make_world_def(&d);
+            assert_int_equal(pg_make_ball(t.w, &bd, &sd, PG_FIX_HALF, &ball), PG_OK);
+            a_model = pg_body_angle(t.w, ball);
+            for (step = 1; step <= 4; ++step) {
+                pg_angle before = pg_body_angle(t.w, ball);
+                double turn = 0.0, tol = 0.0;
+                uint32_t sub;
+                char what[128];
+                assert_int_equal(pg_body_apply_torque(t.w, ball, alpha), PG_OK);
+                assert_int_equal(pg_world_step(t.w), PG_OK);
+                /* the model: the step starts from w clamped to the solver's +-2^29 */
+                if (w_model > (1 << 29)) w_model = 1 << 29;
+                if (w_model < -(1 << 29)) w_model = -(1 << 29);
+                for (sub = 0; sub < s; ++sub) {
+                    pgt_i128 t0 = (pgt_i128)h * sub, t1 = (pgt_i128)h * (sub + 1u);
+                    w_model = sat128((pgt_i128)w_model + round_shift128(alpha * t1, 32) - round_shift128(alpha * t0, 32));
+                    if (w_model != 0) a_model += turn_of_substep(w_model, hz, s);
+                    turn += turn_units(fd(w_model), 1.0 / ((double)hz * s));
+                    tol += substep_turn_tolerance(w_model);
+                }
+                PG_EXPECT_EQ(pg_body_angular_velocity(t.w, ball), w_model, "step_hz %u, %u substeps, torque %+d MAX: w after step %d", (unsigned)hz, (unsigned)s, sign, step);
+                PG_EXPECT_EQ(pg_body_angle(t.w, ball), a_model, "step_hz %u, %u substeps, torque %+d MAX: angle after step %d", (unsigned)hz, (unsigned)s, sign, step);
+                snprintf(what, sizeof what, "step_hz %u, %u substeps, torque %+d MAX, step %d: turn (2^-32 turn)", (unsigned)hz, (unsigned)s, sign, step);
+                turn -= floor(turn / Q32 + 0.5) * Q32;
+                expect_near((double)angle_diff(pg_body_angle(t.w, ball), before), turn, tol, what);
+                /* physically: the first step spins the ball up at 32768 rad/s^2 for 1 / step_hz s */
+                if (step == 1) expect_near(fd(pg_body_angular_velocity(t.w, ball)), sign * 32768.0 / hz, 1e-3, "w after one step of saturated torque");
+            }
+            free_world(&t);
+        }
+    }
+}
+
+/* Audit finding (same class): a contact row's K = 1/mA + 1/mB + (rA x n)^2 / IA + ... is
+ * int64 Q38 in the solver; (r x n)^2 / I passes 2^63 for a light ball (radius 0.025 m,
+ * density 0.1: I = 6.1e-8 kg m^2) with a massless segment of 1.44 m or more (segments add
+ * no mass; the envelope allows vertices 50 m out) touching the ground at its tip: the
+ * sum overflowed (UB). A "lollipop" dropped tip first with its stick tilted 10 degrees
+ * down: the tip must not sink into the ground, energy must not grow, and it must end
+ * with the ball resting on the ground. */
+static void test_light_ball_on_long_massless_stick(void **state)
+{
+    static const double lengths[] = {1.5, 2.0, 5.0, 20.0};
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof lengths / sizeof lengths[0]; ++k) {
+        test_world t = make_world(PG_EFFECTS_ALL);
+        pg_shape_def sd = pg_default_shape_def();
+        const double L = lengths[k], tilt = -10.0, y0 = 0.5 + L * sin(10.0 * PGT_PI / 180.0), g = 10.0;
+        pg_body_def bd = dynamic_at(0, y0);
+        pg_geometry geo;
+        pg_body_id stick;
+        pg_shape_id shape;
+        double m, I, e0, e_max = 0.0, tip_min = 1e9, y_min = 1e9;
+        int i;
+        char what[128];
+        make_ground(t.w, PG_FIX_HALF, 0);
+        bd.angle = angle_from_deg(tilt);
+        assert_int_equal(pg_body_create(t.w, &bd, &stick), PG_OK);
+        sd.density = fx(0.1);
+        assert_int_equal(pg_geometry_circle(pg_v2(0, 0), fx(0.025), &geo), PG_OK);
+        assert_int_equal(pg_shape_create(t.w, stick, &sd, &geo, &shape), PG_OK);
+        assert_int_equal(pg_geometry_segment(pg_v2(0, 0), pg_v2(fx(L), 0), &geo), PG_OK);
+        assert_int_equal(pg_shape_create(t.w, stick, &sd, &geo, &shape), PG_OK);
+        m = (double)pg_body_mass(t.w, stick) / Q32;
+        I = (double)pg_body_inertia(t.w, stick) / Q36;
+        e0 = m * g * y0;
+        for (i = 1; i <= 600; ++i) {
+            pg_vec2 v, p;
+            double a, w, e, tip;
+            assert_int_equal(pg_world_step(t.w), PG_OK);
+            v = pg_body_linear_velocity(t.w, stick);
+            p = pg_body_position(t.w, stick); /* the ball's centre: the segment has no mass */
+            a = angle_deg(pg_body_angle(t.w, stick)) * PGT_PI / 180.0;
+            w = fd(pg_body_angular_velocity(t.w, stick));
+            e = m * g * fd(p.y) + 0.5 * m * (fd(v.x) * fd(v.x) + fd(v.y) * fd(v.y)) + 0.5 * I * w * w;
+            tip = fd(p.y) + L * sin(a);
+            if (e > e_max) e_max = e;
+            if (tip < tip_min) tip_min = tip;
+            if (fd(p.y) < y_min) y_min = fd(p.y);
+        }
+        print_message("stick %.1f m: lowest tip %.4f m, lowest ball centre %.4f m, highest energy %.3g J of %.3g J\n", L, tip_min, y_min, e_max, e0);
+        snprintf(what, sizeof what, "stick %.1f m: lowest point of the tip (m)", L);
+        expect_near(tip_min, 0.0, 0.01, what); /* it did land on its tip, and did not sink */
+        snprintf(what, sizeof what, "stick %.1f m: lowest centre of the ball (m)", L);
+        PG_EXPECT_LE(0.025 - 0.01, y_min, "%s", what);
+        snprintf(what, sizeof what, "stick %.1f m: highest energy (J)", L);
+        PG_EXPECT_LE(e_max, 1.01 * e0, "%s", what);
+        snprintf(what, sizeof what, "stick %.1f m: ball centre after 10 s (m)", L);
+        expect_near(fd(pg_body_position(t.w, stick).y), 0.025, 0.005, what);
+        PG_EXPECT_LE(speed(t.w, stick), 0.05, "stick %.1f m: speed after 10 s (m/s)", L);
+        free_world(&t);
+    }
+}
+
+/* Audit finding (same class): the soft normal row multiplied the mass scale (< 2^30) by
+ * the relative normal speed, which the kernel bounds assumed small; but an anchor far
+ * from a fast-turning body's centre moves at w (r x n): 8192 rad/s (the solver's clamp)
+ * times 16.5 m is 2^33 in Q16.16, and the product left int64 (UB). A ball (radius 0.2 m,
+ * density 0.5) with a massless 50 m segment is spun up by a saturated torque (alpha
+ * saturates at 32768 rad/s^2) high in the air for half a second, then falls spinning
+ * onto the ground. With no torque any more, contacts may only take energy out: the
+ * total energy must never grow (beyond the soft contacts' push-out, far below 1 J), and
+ * w stays within the solver's clamp. */
+static void test_fast_spinning_long_stick_hits_the_ground(void **state)
+{
+    test_world t = make_world(PG_EFFECTS_ALL);
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_def bd = dynamic_at(0, 60.0);
+    pg_geometry geo;
+    pg_body_id stick;
+    pg_shape_id shape;
+    double m, I, e_prev = 0.0, e_spun = 0.0;
+    int i, touched = 0;
+    (void)state;
+    {
+        pg_body_def gd = pg_default_body_def(); /* ground 100 m wide, top at y = 0 */
+        pg_body_id ground;
+        gd.position = pg_v2(0, -PG_FIX_HALF);
+        assert_int_equal(pg_make_wall(t.w, &gd, &sd, PG_FIX_C(100), PG_FIX_ONE, &ground), PG_OK);
+    }
+    assert_int_equal(pg_body_create(t.w, &bd, &stick), PG_OK);
+    sd.density = fx(0.5);
+    assert_int_equal(pg_geometry_circle(pg_v2(0, 0), fx(0.2), &geo), PG_OK);
+    assert_int_equal(pg_shape_create(t.w, stick, &sd, &geo, &shape), PG_OK);
+    assert_int_equal(pg_geometry_segment(pg_v2(0, 0), pg_v2(fx(50.0), 0), &geo), PG_OK);
+    assert_int_equal(pg_shape_create(t.w, stick, &sd, &geo, &shape), PG_OK);
+    m = (double)pg_body_mass(t.w, stick) / Q32;
+    I = (double)pg_body_inertia(t.w, stick) / Q36;
+    for (i = 1; i <= 600; ++i) {
+        pg_vec2 v, p;
+        double w, e;
+        if (i <= 30) assert_int_equal(pg_body_apply_torque(t.w, stick, PG_FIX_MAX), PG_OK);
+        assert_int_equal(pg_world_step(t.w), PG_OK);
+        v = pg_body_linear_velocity(t.w, stick);
+        p = pg_body_position(t.w, stick);
+        w = fd(pg_body_angular_velocity(t.w, stick));
+        PG_EXPECT_LE(fabs(w), 8192.0 + 32768.0 / 60.0, "step %d: |w| within the solver's clamp plus one step of torque", i);
+        e = m * 10.0 * fd(p.y) + 0.5 * m * (fd(v.x) * fd(v.x) + fd(v.y) * fd(v.y)) + 0.5 * I * w * w;
+        if (i == 31) e_spun = e;
+        if (i > 31) PG_EXPECT_LE(e, e_prev + 1.0, "step %d: energy (J) after the torque stopped", i);
+        if (fd(p.y) < 49.0) touched = 1; /* the stick reaches the ground below 50 m */
+        e_prev = e;
+    }
+    print_message("spinning stick: energy %.1f J after the spin-up, %.3f J at the end\n", e_spun, e_prev);
+    assert_true(touched);
+    assert_true(e_spun > 40000.0); /* it did spin: 1/2 I w^2 at 8192 rad/s is 42200 J */
+    assert_true(e_prev < 100.0);   /* and the ground took it out */
+    free_world(&t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -948,6 +1299,12 @@ int main(void)
         cmocka_unit_test(test_determinism),
         cmocka_unit_test(test_continuous_stops_bullet),
         cmocka_unit_test(test_without_continuous_bullet_tunnels),
+        cmocka_unit_test(test_huge_force_saturates_acceleration),
+        cmocka_unit_test(test_saturated_gravity_at_one_hz),
+        cmocka_unit_test(test_spin_at_low_step_rates),
+        cmocka_unit_test(test_saturated_torque_at_low_step_rates),
+        cmocka_unit_test(test_light_ball_on_long_massless_stick),
+        cmocka_unit_test(test_fast_spinning_long_stick_hits_the_ground),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
