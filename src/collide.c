@@ -11,15 +11,25 @@
  *                        better by more than PG__REF_TOLERANCE (0.1 linear slop), so
  *                        stacked boxes keep one reference; cores apart by more than that
  *                        take the better face outright (it measures the distance). The
- *                        incident edge is the other
- *                        shape's edge most anti-parallel to the reference normal. When the
- *                        cores are apart (rounded shapes, speculative contacts) the closest
- *                        features of the two edges decide: two vertices give one point with
- *                        the vertex-to-vertex normal (a capsule end on a box corner);
- *                        otherwise, and always when the cores touch or overlap, the
- *                        incident edge is clipped to the reference face's side planes,
- *                        giving up to two points. Points farther apart than `speculative`
- *                        are dropped.
+ *                        incident edge is the other shape's edge most anti-parallel to the
+ *                        reference normal; it is clipped to the reference face's side
+ *                        planes, giving up to two points. When the cores are apart (rounded
+ *                        shapes, speculative contacts) and the edge runs on beyond a side
+ *                        plane towards the face's line (a "dip": the vertex beyond is
+ *                        nearer the line than the cut), the cut can lie farther from the
+ *                        face's vertex than the edge beyond it does (a capsule leaning back
+ *                        over a face with its end just past the face's end). The face
+ *                        contact is kept while the cut is at most PG__DIP_TOLERANCE farther
+ *                        from that vertex than the edge beyond the plane (compared exactly),
+ *                        so nearly flush edges (a column of equal boxes) and a plank tilted
+ *                        over an edge keep their two points and their reference. Otherwise,
+ *                        and when the edge misses the face, the better face is taken
+ *                        outright, and if its clip too overstates or misses, the closest
+ *                        features of that face and its incident edge decide: two vertices
+ *                        give one point with the vertex-to-vertex normal (a capsule end on a
+ *                        box corner); a vertex of the face against the edge's interior makes
+ *                        the edge's face the reference. Points farther apart than
+ *                        `speculative` are dropped.
  *
  * CONTACT POINTS lie midway between the two surfaces; separations are signed distances
  * along the normal between the surfaces (radii included).
@@ -38,9 +48,34 @@
  * speculative distance <= 2^28 raw. Dot products with Q2.30 normals are kept as int64
  * Q46 sums (< 2^61) and rounded once. Separations against a face are measured from the
  * face's mean offset (v1.n + v2.n) / 2, not from one of its vertices, so reversing a
- * face (as mirroring does) gives the same bits; every formula is symmetric in the two
- * ends of an edge and rounding is symmetric in sign: mirroring a configuration mirrors
- * the manifold exactly.
+ * face (as mirroring does) gives the same bits; so are distances to a segment's interior
+ * in the closest-feature test. Every formula is symmetric in the two ends of an edge and
+ * rounding is symmetric in sign: mirroring a configuration mirrors the manifold exactly
+ * (short of exact ties between two faces, two incident edges or two vertex pairs, which
+ * go to the first in index order).
+ *
+ * SEPARATED CORES: the smallest reported separation exceeds the distance between the
+ * cores (radii aside) by at most PG__DIP_TOLERANCE + 1/2 + eta LSB, eta the largest offset
+ * of a face's mean plane from its own vertices, |(v2 - v1) . n| / 2: at most
+ * sqrt(2)/2 + 1e-3 for shapes placed by pg_geom_transform (vertices rounded per
+ * component, normals rotated), so 2.21 LSB. Derivation: the incident edge holds the
+ * incident core's vertex w deepest along n (it is the most anti-parallel edge), and w's
+ * separation from the face's mean plane is the face's SAT separation s <= distance + eta
+ * (the separation along any axis is at most the distance; the mean plane lies within
+ * eta of the face's vertices). Kept as a point, w reports round(s) <= s + 1/2. Beyond a
+ * side plane through the face's vertex v, the cut there (separation h) is kept if its dip
+ * is at most 1 (h <= round(s) + 1 <= s + 3/2), or else if h is at most 1 + the exact
+ * distance from v to the edge beyond the plane (to w, or to the edge's line measured from
+ * its mean plane: + eta). v is the reference core's point nearest that part of the edge:
+ * the face's own region ends at the side plane, and the next face turns away from an
+ * edge that dips towards the face's line unless the cores meet. The fallbacks are exact
+ * to rounding: vertex to vertex the nearest integer distance (1/2), a face whose interior
+ * holds the closest point its separation (s + 1/2). So no contact is dropped while the
+ * distance less the radii is at most speculative - 2.21 LSB. Each clipped point is its
+ * own distance from the reference core, rounded, so no separation lies below the distance
+ * by more than 1 + eta, except while the hysteresis keeps a face whose separation is
+ * below the better one's: a segment has no inside, and an incident vertex past its line
+ * can still be apart from it (down to that face's separation less 1).
  *
  * LIMITS: coincident circle centres get the normal (0, 1). Segments and capsules must
  * have distinct end points (their normals must be valid). SAT over face normals only:
@@ -50,6 +85,10 @@
 
 /* 0.1 * linear slop (0.005 m), Q16.16. */
 #define PG__REF_TOLERANCE ((int64_t)33)
+
+/* Separated cores: how much farther from the face's vertex a cut at a side plane may lie
+ * than the incident edge beyond that plane, Q16.16 (see pg__clip, pg__cut_overstates). */
+#define PG__DIP_TOLERANCE ((int64_t)1)
 
 #define PG__KIND_FACE_A 0u
 #define PG__KIND_FACE_B 1u
@@ -254,18 +293,18 @@ static int64_t pg__max_separation(const pg_geom *a, const pg_geom *b, int32_t *e
 }
 
 /* Squared distance (Q32.32) from p to the segment a..b whose unit normal is n; *end is
- * 0 or 1 when the closest point is a or b, -1 when it is inside the segment. A point
- * that projects beyond an end by at most PG__REF_TOLERANCE still counts as inside (its
- * perpendicular distance is used): edges that are flush, as in a column of equal boxes,
- * then keep a two-point manifold instead of flickering to a corner contact. */
+ * 0 or 1 when the closest point is a or b (p projects beyond that end; decided exactly),
+ * -1 when it is inside the segment. Inside, the distance is p's separation from the
+ * segment's mean plane (v1 + v2) . n / 2, rounded, as for faces: reversing the segment
+ * (as mirroring does) gives the same bits. */
 static int64_t pg__point_segment(pg_vec2 p, pg_vec2 a, pg_vec2 b, pg_dir n, int *end)
 {
     pg_dir t = pg__tangent(n);
-    int64_t d, slack = -PG__REF_TOLERANCE * PG__Q30;
-    if (pg__dot46((int64_t)p.x - a.x, (int64_t)p.y - a.y, t) < slack) { *end = 0; return pg__dist2(p, a); }
-    if (pg__dot46((int64_t)b.x - p.x, (int64_t)b.y - p.y, t) < slack) { *end = 1; return pg__dist2(p, b); }
+    int64_t d;
+    if (pg__dot46((int64_t)p.x - a.x, (int64_t)p.y - a.y, t) < 0) { *end = 0; return pg__dist2(p, a); }
+    if (pg__dot46((int64_t)b.x - p.x, (int64_t)b.y - p.y, t) < 0) { *end = 1; return pg__dist2(p, b); }
     *end = -1;
-    d = pg__round_shift64(pg__dot46((int64_t)p.x - a.x, (int64_t)p.y - a.y, n), 30);
+    d = pg__q16_of2(pg__sep2(p, n, pg__vdot46(a, n) + pg__vdot46(b, n)));
     return d * d;
 }
 
@@ -282,17 +321,129 @@ static int pg__segments_cross(pg_vec2 a1, pg_vec2 a2, pg_vec2 b1, pg_vec2 b2)
     return pg__orient(a1, a2, b1) * pg__orient(a1, a2, b2) < 0 && pg__orient(b1, b2, a1) * pg__orient(b1, b2, a2) < 0;
 }
 
+/* The edge of g whose normal is the most anti-parallel to n (the first on ties). */
+static int32_t pg__incident_edge(const pg_geom *g, pg_dir n)
+{
+    int32_t k, j = 0;
+    int64_t best = INT64_MAX;
+    for (k = 0; k < g->count; ++k) {
+        int64_t dd = (int64_t)n.x * g->normals[k].x + (int64_t)n.y * g->normals[k].y;
+        if (dd < best) { best = dd; j = k; }
+    }
+    return j;
+}
+
+/* The incident edge i21 -> i22 of inc clipped to the side planes of ref's face i11:
+ * the candidate points before the speculative filter, with their core separations. */
+typedef struct pg__clip {
+    pg_vec2 p[2];
+    int64_t sep[2]; /* Q16.16, between the cores (radii not subtracted) */
+    int32_t iv[2];  /* the incident vertex each point comes from */
+    int32_t count;  /* 1 when the edge misses the face (both ends beyond one side plane), else 2 */
+    int32_t miss;
+    /* Per end (0: at the lower side plane, through v11; 1: at the upper one, through v12),
+     * when the edge was cut there: the cut's "dip", its separation less that of the
+     * incident vertex beyond the plane (Q16.16); INT64_MIN when that end is the vertex. */
+    int64_t dip[2];
+} pg__clip;
+
+static void pg__clip_edge(const pg_geom *ref, int32_t i11, const pg_geom *inc, int32_t i21, int64_t rdiff, pg__clip *c)
+{
+    int32_t i12 = pg__next(i11, ref->count), i22 = pg__next(i21, inc->count);
+    pg_dir n = ref->normals[i11], t = pg__tangent(n);
+    pg_vec2 v11 = ref->vertices[i11], v12 = ref->vertices[i12], v21 = inc->vertices[i21], v22 = inc->vertices[i22];
+    int64_t off2 = pg__face_off2(ref, i11);
+    int64_t s21 = pg__q16_of2(pg__sep2(v21, n, off2)), s22 = pg__q16_of2(pg__sep2(v22, n, off2));
+    /* The incident edge runs against the tangent: "lower" side plane through v11,
+     * "upper" through v12; dl = rounded offset past the lower plane, du before the upper. */
+    int64_t dl21 = pg__round_shift64(pg__dot46((int64_t)v21.x - v11.x, (int64_t)v21.y - v11.y, t), 30);
+    int64_t dl22 = pg__round_shift64(pg__dot46((int64_t)v22.x - v11.x, (int64_t)v22.y - v11.y, t), 30);
+    int64_t du21 = pg__round_shift64(pg__dot46((int64_t)v12.x - v21.x, (int64_t)v12.y - v21.y, t), 30);
+    int64_t du22 = pg__round_shift64(pg__dot46((int64_t)v12.x - v22.x, (int64_t)v12.y - v22.y, t), 30);
+
+    c->dip[0] = c->dip[1] = INT64_MIN;
+    c->miss = (dl21 < 0 && dl22 < 0) || (du21 < 0 && du22 < 0);
+    if (c->miss) {
+        /* One point at the deeper vertex. */
+        int use21 = s21 <= s22;
+        int64_t s = use21 ? s21 : s22;
+        c->count = 1;
+        c->iv[0] = use21 ? i21 : i22;
+        c->p[0] = pg__add_half(use21 ? v21 : v22, n, rdiff - s);
+        c->sep[0] = s;
+        return;
+    }
+    c->count = 2;
+    /* Lower end: v22, or the point of the edge on the plane through v11. */
+    if (dl22 >= 0) {
+        c->p[0] = pg__add_half(v22, n, rdiff - s22);
+        c->sep[0] = s22;
+    } else {
+        int64_t h = pg__div_round(s22 * dl21 - s21 * dl22, dl21 - dl22);
+        /* v11 + (h + e) n, e = off2/2 - v11.n: the point lies on the side plane. */
+        int64_t e2 = off2 - 2 * pg__vdot46(v11, n); /* 2e, Q46 */
+        c->p[0] = pg__add_half(v11, n, pg__round_shift64(e2, 30) + h + rdiff);
+        c->sep[0] = h;
+        c->dip[0] = h - s22;
+    }
+    c->iv[0] = i22;
+    /* Upper end: v21, or the point on the plane through v12. */
+    if (du21 >= 0) {
+        c->p[1] = pg__add_half(v21, n, rdiff - s21);
+        c->sep[1] = s21;
+    } else {
+        int64_t h = pg__div_round(s21 * du22 - s22 * du21, du22 - du21);
+        int64_t e2 = off2 - 2 * pg__vdot46(v12, n);
+        c->p[1] = pg__add_half(v12, n, pg__round_shift64(e2, 30) + h + rdiff);
+        c->sep[1] = h;
+        c->dip[1] = h - s21;
+    }
+    c->iv[1] = i21;
+}
+
+/* A cut at the side plane through the face vertex v, separation h (Q16.16): is it
+ * farther from v, by more than PG__DIP_TOLERANCE, than the part of the incident edge
+ * beyond that plane is? That part ends at the incident vertex w, d points along the edge
+ * towards w, n2 and off2 are the incident face's normal and doubled offset. The edge
+ * dips, so its point nearest v lies beyond the plane: w when v projects onto the edge's
+ * line beyond w, else the foot of the perpendicular, v's separation from the edge's mean
+ * plane; both compared exactly. (Counting an incident vertex up to PG__REF_TOLERANCE
+ * beyond a face's end as over the face, as collide.c did once, reported the cut: the
+ * gap overstated by that offset times the tangent of the edge's tilt, without bound.) */
+static int pg__cut_overstates(int64_t h, pg_vec2 v, pg_vec2 w, pg_dir d, pg_dir n2, int64_t off2)
+{
+    int64_t k = h - PG__DIP_TOLERANCE, s;
+    if (k <= 0) return 0;
+    if (pg__dot46((int64_t)v.x - w.x, (int64_t)v.y - w.y, d) >= 0) return k * k > pg__dist2(v, w);
+    s = pg__sep2(v, n2, off2);
+    return k * ((int64_t)1 << 31) > (s < 0 ? -s : s);
+}
+
+/* Does the clip of the incident edge i21 of inc against ref's face i11 miss the face, or
+ * overstate the gap at a side plane by more than PG__DIP_TOLERANCE? */
+static int pg__clip_overstates(const pg_geom *ref, int32_t i11, const pg_geom *inc, int32_t i21, const pg__clip *c)
+{
+    int32_t i22 = pg__next(i21, inc->count);
+    pg_dir n2 = inc->normals[i21], t2 = pg__tangent(n2);
+    int64_t off2 = pg__face_off2(inc, i21);
+    if (c->miss) return 1;
+    if (c->dip[0] > PG__DIP_TOLERANCE &&
+        pg__cut_overstates(c->sep[0], ref->vertices[i11], inc->vertices[i22], t2, n2, off2))
+        return 1;
+    return c->dip[1] > PG__DIP_TOLERANCE &&
+           pg__cut_overstates(c->sep[1], ref->vertices[pg__next(i11, ref->count)], inc->vertices[i21], pg__dir(-t2.x, -t2.y), n2, off2);
+}
+
 static void pg__collide_polygons(const pg_geom *a, const pg_geom *b, pg_fix speculative, pg_manifold *out)
 {
     const pg_geom *ref, *inc;
-    int32_t ea, eb, i11, i12, i21, i22, j, flip, far, apart;
+    int32_t ea, eb, i11, j, flip, far, k;
     int64_t sa = pg__max_separation(a, b, &ea), sb = pg__max_separation(b, a, &eb);
-    int64_t radius = (int64_t)a->radius + b->radius, rdiff;
+    int64_t radius = (int64_t)a->radius + b->radius;
     int64_t limit2 = ((int64_t)speculative + radius) * ((int64_t)1 << 31);
-    int64_t off2, s21, s22, dl21, dl22, du21, du22, best_dot;
-    pg_dir n, t;
-    pg_vec2 v11, v12, v21, v22;
+    pg_dir n;
     uint32_t kind;
+    pg__clip c;
 
     if (sa > limit2 || sb > limit2) return;
 
@@ -300,131 +451,106 @@ static void pg__collide_polygons(const pg_geom *a, const pg_geom *b, pg_fix spec
      * separation (A on ties), without hysteresis. The closest points of two separated
      * convex cores span a slab that separates them, so when they are a vertex and a
      * face's interior that face's separation is the distance and no other face's is
-     * larger: the best face measures the distance. A face kept by the hysteresis may
-     * instead see the incident edge clipped at its side plane farther away than the
-     * closest points really are (a vertex of A against the interior of a face of B that
-     * is tilted against A's face), overstating the gap. Touching or overlapping cores
-     * (resting contact) keep A's face unless B's is better by PG__REF_TOLERANCE. */
+     * larger: the best face measures the distance. Touching, overlapping or nearly
+     * touching cores (resting contact) keep A's face unless B's is better by
+     * PG__REF_TOLERANCE. */
     far = (sa > sb ? sa : sb) > PG__REF_TOLERANCE * ((int64_t)1 << 31);
     flip = far ? sb > sa : sb > sa + PG__REF_TOLERANCE * ((int64_t)1 << 31);
     ref = flip ? b : a;
     inc = flip ? a : b;
     i11 = flip ? eb : ea;
-    i12 = pg__next(i11, ref->count);
+    j = pg__incident_edge(inc, ref->normals[i11]);
+    pg__clip_edge(ref, i11, inc, j, (int64_t)ref->radius - inc->radius, &c);
+
+    /* Cores apart (a face axis separates them, or two segments that do not cross: end to
+     * end on one line no face axis shows it) whose clip misses the face or overstates the
+     * gap at a side plane: take the better face outright, and if its clip does too, the
+     * closest features of that face and its incident edge decide. */
+    if ((sa > 0 || sb > 0 || (a->count == 2 && b->count == 2)) &&
+        (c.miss || c.dip[0] > PG__DIP_TOLERANCE || c.dip[1] > PG__DIP_TOLERANCE) &&
+        (sa > 0 || sb > 0 || !pg__segments_cross(a->vertices[0], a->vertices[1], b->vertices[0], b->vertices[1])) &&
+        pg__clip_overstates(ref, i11, inc, j, &c)) {
+        if (flip != (sb > sa)) {
+            flip = sb > sa;
+            ref = flip ? b : a;
+            inc = flip ? a : b;
+            i11 = flip ? eb : ea;
+            j = pg__incident_edge(inc, ref->normals[i11]);
+            pg__clip_edge(ref, i11, inc, j, (int64_t)ref->radius - inc->radius, &c);
+        }
+        if (pg__clip_overstates(ref, i11, inc, j, &c)) {
+            int32_t i12 = pg__next(i11, ref->count), i22 = pg__next(j, inc->count);
+            pg_vec2 v11 = ref->vertices[i11], v12 = ref->vertices[i12], v21 = inc->vertices[j], v22 = inc->vertices[i22];
+            int64_t d2[4];
+            int ends[4], best_k = 0, face_vertex = 0, ref_vertex = -1;
+            d2[0] = pg__point_segment(v21, v11, v12, ref->normals[i11], &ends[0]);
+            d2[1] = pg__point_segment(v22, v11, v12, ref->normals[i11], &ends[1]);
+            d2[2] = pg__point_segment(v11, v21, v22, inc->normals[j], &ends[2]);
+            d2[3] = pg__point_segment(v12, v21, v22, inc->normals[j], &ends[3]);
+            for (k = 1; k < 4; ++k)
+                if (d2[k] < d2[best_k]) best_k = k;
+            for (k = 0; k < 4; ++k)
+                if (d2[k] == d2[best_k] && ends[k] < 0) {
+                    if (k < 2) face_vertex = 1;
+                    else ref_vertex = k;
+                }
+            /* An incident vertex over the face's interior (or touching cores): the clip
+             * holds it. */
+            if (d2[best_k] > 0 && !face_vertex) {
+                if (ref_vertex < 0) {
+                    /* Two vertices: one point, the normal from A's vertex to B's. */
+                    int32_t ir, ii, ia, ib;
+                    pg_vec2 va, vb;
+                    int64_t dist, sep;
+                    pg_dir nn;
+                    if (best_k < 2) { ii = best_k == 0 ? j : i22; ir = ends[best_k] == 0 ? i11 : i12; }
+                    else { ir = best_k == 2 ? i11 : i12; ii = ends[best_k] == 0 ? j : i22; }
+                    ia = flip ? ii : ir;
+                    ib = flip ? ir : ii;
+                    va = a->vertices[ia];
+                    vb = b->vertices[ib];
+                    dist = (int64_t)pg__sqrt_nearest((uint64_t)pg__dist2(va, vb));
+                    sep = dist - radius;
+                    if (sep > speculative) return;
+                    nn = pg_dir_normalize((int64_t)vb.x - va.x, (int64_t)vb.y - va.y);
+                    out->normal = nn;
+                    pg__push(out, pg__mid_half(va, vb, nn, (int64_t)a->radius - b->radius), sep, PG__ID(PG__KIND_POINTS, ia, ib));
+                    return;
+                } else {
+                    /* A vertex of the reference face against the incident edge's interior
+                     * (the better face ties with that edge's, or rounding): that edge's
+                     * face is the reference, of a segment the side facing the vertex. */
+                    const pg_geom *g = ref;
+                    pg_vec2 v = ref_vertex == 2 ? v11 : v12;
+                    ref = inc;
+                    inc = g;
+                    flip = !flip;
+                    i11 = j;
+                    if (ref->count == 2 && pg__sep2(v, ref->normals[i11], pg__face_off2(ref, i11)) < 0) i11 = 1 - i11;
+                    j = pg__incident_edge(inc, ref->normals[i11]);
+                    pg__clip_edge(ref, i11, inc, j, (int64_t)ref->radius - inc->radius, &c);
+                }
+            }
+        }
+    }
+
+    /* Two ends that round to the same point (the edge crosses a side plane right next to
+     * its vertex) are one point: the deeper, on ties the vertex rather than the cut, so
+     * that the choice does not depend on which end is the "lower" one (mirroring swaps
+     * them). */
+    if (c.count == 2 && pg_v2_equal(c.p[0], c.p[1])) {
+        k = c.sep[0] != c.sep[1] ? c.sep[1] < c.sep[0] : c.dip[0] != INT64_MIN;
+        c.p[0] = c.p[k];
+        c.sep[0] = c.sep[k];
+        c.iv[0] = c.iv[k];
+        c.count = 1;
+    }
     n = ref->normals[i11];
-    t = pg__tangent(n);
-
-    /* Incident edge: the most anti-parallel normal (first on ties). */
-    j = 0;
-    best_dot = INT64_MAX;
-    {
-        int32_t k;
-        for (k = 0; k < inc->count; ++k) {
-            int64_t dd = (int64_t)n.x * inc->normals[k].x + (int64_t)n.y * inc->normals[k].y;
-            if (dd < best_dot) { best_dot = dd; j = k; }
-        }
-    }
-    i21 = j;
-    i22 = pg__next(j, inc->count);
-    v11 = ref->vertices[i11];
-    v12 = ref->vertices[i12];
-    v21 = inc->vertices[i21];
-    v22 = inc->vertices[i22];
-    rdiff = (int64_t)ref->radius - inc->radius;
     kind = flip ? PG__KIND_FACE_B : PG__KIND_FACE_A;
-
-    /* Cores apart by more than the tolerance: do two vertices hold the closest points?
-     * Two segments can also be apart with no face axis showing it (end to end on one
-     * line): unless they cross, look at their closest features too. */
-    apart = far;
-    if (!apart && a->count == 2 && b->count == 2) apart = !pg__segments_cross(v11, v12, v21, v22);
-    if (apart) {
-        pg_dir n2 = inc->normals[j];
-        int64_t d2[4];
-        int ends[4], k, best_k = 0, interior = 0;
-        d2[0] = pg__point_segment(v21, v11, v12, n, &ends[0]);
-        d2[1] = pg__point_segment(v22, v11, v12, n, &ends[1]);
-        d2[2] = pg__point_segment(v11, v21, v22, n2, &ends[2]);
-        d2[3] = pg__point_segment(v12, v21, v22, n2, &ends[3]);
-        for (k = 1; k < 4; ++k)
-            if (d2[k] < d2[best_k]) best_k = k;
-        for (k = 0; k < 4; ++k)
-            if (d2[k] == d2[best_k] && ends[k] < 0) interior = 1;
-        if (!interior && d2[best_k] > 0) {
-            int32_t ir, ii; /* reference and incident vertex indices */
-            pg_vec2 va, vb;
-            int32_t ia, ib;
-            int64_t dist, sep;
-            pg_dir nn;
-            if (best_k < 2) { ii = best_k == 0 ? i21 : i22; ir = ends[best_k] == 0 ? i11 : i12; }
-            else { ir = best_k == 2 ? i11 : i12; ii = ends[best_k] == 0 ? i21 : i22; }
-            ia = flip ? ii : ir;
-            ib = flip ? ir : ii;
-            va = a->vertices[ia];
-            vb = b->vertices[ib];
-            dist = (int64_t)pg__sqrt_nearest((uint64_t)pg__dist2(va, vb));
-            sep = dist - radius;
-            if (sep > speculative) return;
-            nn = pg_dir_normalize((int64_t)vb.x - va.x, (int64_t)vb.y - va.y);
-            out->normal = nn;
-            pg__push(out, pg__mid_half(va, vb, nn, (int64_t)a->radius - b->radius), sep,
-                     PG__ID(PG__KIND_POINTS, ia, ib));
-            return;
-        }
-    }
-
-    /* Clip the incident edge v21 -> v22 (it runs against the tangent) to the reference
-     * face's side planes: "lower" through v11, "upper" through v12. */
-    off2 = pg__face_off2(ref, i11);
-    s21 = pg__q16_of2(pg__sep2(v21, n, off2));
-    s22 = pg__q16_of2(pg__sep2(v22, n, off2));
-    dl21 = pg__round_shift64(pg__dot46((int64_t)v21.x - v11.x, (int64_t)v21.y - v11.y, t), 30);
-    dl22 = pg__round_shift64(pg__dot46((int64_t)v22.x - v11.x, (int64_t)v22.y - v11.y, t), 30);
-    du21 = pg__round_shift64(pg__dot46((int64_t)v12.x - v21.x, (int64_t)v12.y - v21.y, t), 30);
-    du22 = pg__round_shift64(pg__dot46((int64_t)v12.x - v22.x, (int64_t)v12.y - v22.y, t), 30);
-
     out->normal = flip ? pg__dir(-n.x, -n.y) : n;
-    if ((dl21 < 0 && dl22 < 0) || (du21 < 0 && du22 < 0)) {
-        /* The incident edge misses the face (only in degenerate overlaps): one point at
-         * its deeper vertex. */
-        int use21 = s21 <= s22;
-        int64_t s = use21 ? s21 : s22;
-        int32_t iv = use21 ? i21 : i22;
-        pg_vec2 v = use21 ? v21 : v22;
-        if (s - radius <= speculative)
-            pg__push(out, pg__add_half(v, n, rdiff - s), s - radius, flip ? PG__ID(kind, iv, i11) : PG__ID(kind, i11, iv));
-    } else {
-        pg_vec2 p[2];
-        int64_t sep[2];
-        int32_t iv[2], k;
-        /* Lower end: v22, or the point of the edge on the plane through v11. */
-        if (dl22 >= 0) {
-            p[0] = pg__add_half(v22, n, rdiff - s22);
-            sep[0] = s22;
-        } else {
-            int64_t h = pg__div_round(s22 * dl21 - s21 * dl22, dl21 - dl22);
-            /* v11 + (h + e) n, e = off2/2 - v11.n: the point lies on the side plane. */
-            int64_t e2 = off2 - 2 * pg__vdot46(v11, n); /* 2e, Q46 */
-            p[0] = pg__add_half(v11, n, pg__round_shift64(e2, 30) + h + rdiff);
-            sep[0] = h;
-        }
-        iv[0] = i22;
-        /* Upper end: v21, or the point on the plane through v12. */
-        if (du21 >= 0) {
-            p[1] = pg__add_half(v21, n, rdiff - s21);
-            sep[1] = s21;
-        } else {
-            int64_t h = pg__div_round(s21 * du22 - s22 * du21, du22 - du21);
-            int64_t e2 = off2 - 2 * pg__vdot46(v12, n);
-            p[1] = pg__add_half(v12, n, pg__round_shift64(e2, 30) + h + rdiff);
-            sep[1] = h;
-        }
-        iv[1] = i21;
-        for (k = 0; k < 2; ++k) {
-            if (sep[k] - radius > speculative) continue;
-            if (k == 1 && out->count == 1 && pg_v2_equal(out->points[0].point, p[1])) continue;
-            pg__push(out, p[k], sep[k] - radius, flip ? PG__ID(kind, iv[k], i11) : PG__ID(kind, i11, iv[k]));
-        }
+    for (k = 0; k < c.count; ++k) {
+        if (c.sep[k] - radius > speculative) continue;
+        pg__push(out, c.p[k], c.sep[k] - radius, flip ? PG__ID(kind, c.iv[k], i11) : PG__ID(kind, i11, c.iv[k]));
     }
     if (out->count == 0) out->normal = pg__dir(0, 0);
 }

@@ -1061,6 +1061,23 @@ static pg_geom shifted(const pg_geom *g, pg_fix dx, pg_fix dy)
 #define INC_POINT_TOL (0.75 + 2 * HALF_SQRT2 + 1e-3)
 #define SEPARATION_LOW_TOL (1.0 + HALF_SQRT2 + 1e-3)
 
+/* OVERSTATEMENT  how far a reported separation of separated cores can exceed the
+ *   distance (collide.c, SEPARATED CORES). The reference face's incident edge holds the
+ *   incident core's vertex deepest along the face normal, whose separation from the face's
+ *   mean plane is the face's SAT separation s, at most the distance + FACE_ETA. collide.c
+ *   keeps that vertex as a point (rounded: s + 1/2), or cuts the edge at the side plane
+ *   it lies beyond, and keeps the cut only while its separation exceeds the vertex's
+ *   rounded one by at most PG__DIP_TOLERANCE (1 LSB: s + 1/2 + 1), or the exact distance
+ *   from the face's vertex on that plane to the edge beyond it by at most that (+ the
+ *   edge's FACE_ETA, when measured to the edge's line). Otherwise (and when the edge misses
+ *   the face) the closest features decide, vertex to vertex (the distance to 1/2) or a
+ *   vertex against a face's interior (s + 1/2 of that face). So the bound is
+ *   DIP_TOL + 1/2 + FACE_ETA: 2.21 LSB for boxes placed by pg_geom_transform, 1.5 for
+ *   faces whose normals are exact to far below 1 LSB over their length (make_poly). */
+#define DIP_TOL 1.0 /* PG__DIP_TOLERANCE in collide.c, LSB */
+#define OVERSTATE_TOL (DIP_TOL + 0.5 + HALF_SQRT2 + 1e-3)
+#define OVERSTATE_TOL_EXACT_NORMALS (DIP_TOL + 0.5 + 1e-3)
+
 /* Twice the separation of q's vertices from p's face i as collide.c measures it (stored
  * normal, from the face's mean offset), exactly: Q46 x 2 (|coordinates| < 2^20 raw here). */
 static int64_t face_sep2(const pg_geom *p, int32_t i, const pg_geom *q)
@@ -1083,35 +1100,6 @@ static int64_t best_face_sep2(const pg_geom *p, const pg_geom *q)
     for (i = 0; i < p->count; ++i) {
         int64_t s = face_sep2(p, i, q);
         if (s > best) best = s;
-    }
-    return best;
-}
-
-/* The smallest distance (LSB) from a vertex of one core to the line of an edge of the
- * other that it passes beyond an end by at most PG__REF_TOLERANCE: pg__point_segment
- * counts such a vertex as inside the edge, at that perpendicular distance (decided here
- * exactly as there, with the stored normal). 1e300 if there is none. */
-static double slack_distance(const pg_geom *a, const pg_geom *b)
-{
-    double best = 1e300;
-    int pass;
-    for (pass = 0; pass < 2; ++pass) {
-        const pg_geom *p = pass ? b : a, *q = pass ? a : b;
-        int32_t i, j, edges = p->count == 2 ? 1 : p->count;
-        for (i = 0; i < edges; ++i) {
-            pg_vec2 e1 = p->vertices[i], e2 = p->vertices[(i + 1) % p->count];
-            pg_dir n = p->normals[i];
-            int64_t tx = -(int64_t)n.y, ty = n.x, slack = -((int64_t)REF_TOL << 30);
-            for (j = 0; j < q->count; ++j) {
-                pg_vec2 w = q->vertices[j];
-                int64_t lo = ((int64_t)w.x - e1.x) * tx + ((int64_t)w.y - e1.y) * ty;
-                int64_t hi = ((int64_t)e2.x - w.x) * tx + ((int64_t)e2.y - w.y) * ty;
-                if (lo >= slack && hi >= slack && (lo < 0 || hi < 0)) {
-                    double perp = fabs((double)(((int64_t)w.x - e1.x) * n.x + ((int64_t)w.y - e1.y) * n.y)) / Q30;
-                    if (perp < best) best = perp;
-                }
-            }
-        }
     }
     return best;
 }
@@ -1179,6 +1167,8 @@ static int misses_face(const pg_geom *p, int32_t i, pg_vec2 w1, pg_vec2 w2)
  * point - r n, which is inside the capsule.) One case is designed to leave the face: when
  * the incident edge misses the face (both ends beyond one side plane; collide.c keeps
  * "one point at its deeper vertex"), the point is over the face's LINE beyond its end. */
+static unsigned long long midway_seed; /* named in expect_midway's messages */
+
 static void expect_midway(const pg_geom *a, const pg_geom *b, const pg_manifold *m, int iter)
 {
     double nx = m->normal.x / Q30, ny = m->normal.y / Q30;
@@ -1194,8 +1184,8 @@ static void expect_midway(const pg_geom *a, const pg_geom *b, const pg_manifold 
         q[1][0] = mp->point.x + kb * nx;
         q[1][1] = mp->point.y + kb * ny;
         if (kind == 2) {
-            PG_EXPECT_LE(dist_to_vertex(a, fa, q[0][0], q[0][1]), VERTEX_POINT_TOL, "iter %d point %d: A's vertex %d", iter, i, fa);
-            PG_EXPECT_LE(dist_to_vertex(b, fb, q[1][0], q[1][1]), VERTEX_POINT_TOL, "iter %d point %d: B's vertex %d", iter, i, fb);
+            PG_EXPECT_LE(dist_to_vertex(a, fa, q[0][0], q[0][1]), VERTEX_POINT_TOL, "seed %llu iter %d point %d: A's vertex %d", midway_seed, iter, i, fa);
+            PG_EXPECT_LE(dist_to_vertex(b, fb, q[1][0], q[1][1]), VERTEX_POINT_TOL, "seed %llu iter %d point %d: B's vertex %d", midway_seed, iter, i, fb);
         } else {
             /* kind 0: A's face fa is the reference, B's vertex fb incident; kind 1 the other way */
             const pg_geom *ref = kind == 0 ? a : b, *inc = kind == 0 ? b : a;
@@ -1204,12 +1194,12 @@ static void expect_midway(const pg_geom *a, const pg_geom *b, const pg_manifold 
             int miss = m->count == 1 && c >= 2 && dist_to_vertex(inc, iv, qi[0], qi[1]) <= HALF_SQRT2 + 1e-3 &&
                        (misses_face(ref, f, inc->vertices[iv], inc->vertices[(iv + 1) % c]) ||
                         misses_face(ref, f, inc->vertices[iv], inc->vertices[(iv + c - 1) % c]));
-            PG_EXPECT_LE(kind, 1, "iter %d point %d: id %x", iter, i, mp->id);
-            PG_EXPECT_LE(dist_to_edge_line(ref, f, qr[0], qr[1]), REF_POINT_TOL, "iter %d point %d id %x: off the reference face's line",
-                         iter, i, mp->id);
+            PG_EXPECT_LE(kind, 1, "seed %llu iter %d point %d: id %x", midway_seed, iter, i, mp->id);
+            PG_EXPECT_LE(dist_to_edge_line(ref, f, qr[0], qr[1]), REF_POINT_TOL, "seed %llu iter %d point %d id %x: off the reference face's line",
+                         midway_seed, iter, i, mp->id);
             if (!miss)
-                PG_EXPECT_LE(dist_to_edge(ref, f, qr[0], qr[1]), REF_POINT_TOL, "iter %d point %d id %x: beyond the reference face", iter, i, mp->id);
-            PG_EXPECT_LE(dist_to_incident(inc, iv, qi[0], qi[1]), INC_POINT_TOL, "iter %d point %d id %x: off the incident feature", iter, i, mp->id);
+                PG_EXPECT_LE(dist_to_edge(ref, f, qr[0], qr[1]), REF_POINT_TOL, "seed %llu iter %d point %d id %x: beyond the reference face", midway_seed, iter, i, mp->id);
+            PG_EXPECT_LE(dist_to_incident(inc, iv, qi[0], qi[1]), INC_POINT_TOL, "seed %llu iter %d point %d id %x: off the incident feature", midway_seed, iter, i, mp->id);
         }
     }
 }
@@ -1256,9 +1246,8 @@ static void test_apart_tilted_faces(void **state)
     expect_unit(m.normal);
     for (i = 0; i < m.count; ++i)
         if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
-    /* a vertex against a face's interior, cores apart by more than PG__REF_TOLERANCE and
-     * no vertex in an edge's end band: the separation is the distance within rounding */
-    PG_EXPECT_LE(ref * 65536.0, slack_distance(&a, &b), "%s", "no vertex in an edge's end band");
+    /* a vertex against a face's interior, cores apart by more than PG__REF_TOLERANCE:
+     * the separation is the distance within rounding */
     PG_EXPECT_LE(got - ref, 3.0 / 65536, "separation %.6f reference %.6f", got, ref);
     PG_EXPECT_LE(-SEPARATION_LOW_TOL / 65536, got - ref, "separation %.9f reference %.9f", got, ref);
     /* B's face 6 is the reference: the normal points from A to B along -n6 */
@@ -1272,55 +1261,209 @@ static void test_apart_tilted_faces(void **state)
     PG_EXPECT_LE(-SEPARATION_LOW_TOL / 65536, got2 - ref, "swapped separation %.9f reference %.9f", got2, ref);
 }
 
-/* README, "what is left": "The narrowphase can overstate the gap of a separated
- * capsule/segment pair near a vertex by up to ~30 LSB (5·10⁻⁴ m) in rare configurations."
- * The configuration: pg__point_segment counts a vertex up to PG__REF_TOLERANCE (33 LSB)
- * beyond the end of the other core's face as over that face, and collide.c then clips the
- * incident edge at the face's side plane instead of measuring vertex to vertex. Here A
- * runs from (0, 0) to (1, 0) and B's end w lies delta beyond A's end at height h, B leaning
- * back over A at the tilt theta: B's edge crosses the side plane x = 1 at height
- * h + delta tan(theta), which is what is reported, while the distance is
- * sqrt(h^2 + delta^2). Past the band (delta > 33 LSB) the pair is vertex to vertex and
- * the separation is the distance to 1/2 LSB (the nearest integer square root; the double
- * reference is exact to far below that).
- *
- * The README's bound holds while 33 tan(theta) <= 30: tilts up to about 42 degrees, which
- * this test covers. KNOWN LIBRARY BUG, kept out of the default run: steeper tilts
- * overstate by up to 33 tan(theta) LSB with no limit (57 LSB at 60 degrees, 1890 at 89),
- * and at 89.8 degrees with delta = 33 LSB the contact is lost although the gap is 0.03 m,
- * inside the 0.1 m speculative distance. Build with -DPGT_KNOWN_BUG_VERTEX_GAP to run
- * test_segment_vertex_gap_steep, which asserts the README's bound there and fails. */
-#define README_VERTEX_GAP_LSB 30.0
+static pg_geom geom_of(int32_t count, const int32_t (*v)[2], const int32_t (*n)[2], pg_fix radius)
+{
+    pg_geom g = blank();
+    int32_t i;
+    g.count = count;
+    for (i = 0; i < count; ++i) {
+        g.vertices[i] = pg_v2(v[i][0], v[i][1]);
+        g.normals[i].x = n[i][0];
+        g.normals[i].y = n[i][1];
+    }
+    g.radius = radius;
+    return g;
+}
 
+/* The smallest separation of a manifold, m. */
+static double min_separation(const pg_manifold *m)
+{
+    double got = 1e300;
+    int i;
+    for (i = 0; i < m->count; ++i)
+        if (dbl(m->points[i].separation) < got) got = dbl(m->points[i].separation);
+    return got;
+}
+
+/* Regression (seed 11, pair 974022 of test_random_pairs): a triangle A and a box B,
+ * 6163.7 LSB apart, the closest points A's vertex 0 and B's vertex 0. B's face 0 is the
+ * reference; A's incident edge 0 -> 1 ends at vertex 0, a few LSB beyond the face's end,
+ * and rises steeply from there over the face: clipped at the side plane it reported 6210
+ * (the mirrored pair, 6164). */
+static void test_vertex_beyond_face_polygons(void **state)
+{
+    static const int32_t av[3][2] = {{49436, 38831}, {-62582, -5942}, {41545, -47178}};
+    static const int32_t an[3][2] = {{-398515268, 997049189}, {-395347014, -998309693}, {1069251114, -98099740}};
+    static const int32_t bv[4][2] = {{-41530, 105135}, {52761, 44021}, {71596, 73081}, {-22695, 134195}};
+    static const int32_t bn[4][2] = {{-584007579, -901030882}, {901030882, -584007579}, {584007579, 901030882}, {-901030882, 584007579}};
+    pg_geom a = geom_of(3, av, an, 0), b = geom_of(4, bv, bn, 0), ma = mirror(&a), mb = mirror(&b);
+    pg_manifold m = collide(&a, &b, fx(0.1)), w = collide(&b, &a, fx(0.1)), r = collide(&ma, &mb, fx(0.1));
+    double ref = core_distance(&a, &b);
+    (void)state;
+    expect_near(ref * 65536, 6163.7, 0.05, "reference distance (LSB)");
+    PG_EXPECT_LE(1, m.count, "%s", "contact");
+    PG_EXPECT_LE((min_separation(&m) - ref) * 65536, OVERSTATE_TOL, "%s", "overstated (LSB)");
+    PG_EXPECT_LE((ref - min_separation(&m)) * 65536, SEPARATION_LOW_TOL, "%s", "understated (LSB)");
+    PG_EXPECT_LE((min_separation(&w) - ref) * 65536, OVERSTATE_TOL, "%s", "swapped: overstated (LSB)");
+    PG_EXPECT_LE((ref - min_separation(&w)) * 65536, SEPARATION_LOW_TOL, "%s", "swapped: understated (LSB)");
+    PG_EXPECT_EQ(r.normal.x, -m.normal.x, "%s", "mirror");
+    PG_EXPECT_EQ(r.normal.y, m.normal.y, "%s", "mirror");
+    expect_matching(&m, &r, 1, 0, "mirror");
+    expect_midway(&a, &b, &m, -1);
+}
+
+/* Regression (seed 11, pair 28851 of test_random_pairs): a box A and a capsule B whose
+ * cores are apart; the capsule's end and the box's vertex 0 are nearly as close as the
+ * end and the interior of the box's face 0. pg__point_segment measured the perpendicular
+ * distance from the face's first vertex, which mirroring changes (the face is reversed):
+ * 28142 against 28141 (squared distances, rounded), so one side chose vertex to vertex
+ * (one point, separation 2208) and the mirror image the face (two points, another
+ * normal). Distances to a face's interior are now measured from its mean plane. */
+static void test_mirror_near_tie(void **state)
+{
+    static const int32_t av[4][2] = {{117301, -34030}, {59605, 106605}, {-117301, 34030}, {-59605, -106605}};
+    static const int32_t an[4][2] = {{993394023, 407541186}, {-407541186, 993394023}, {-993394023, -407541186}, {407541186, -993394023}};
+    static const int32_t bv[2][2] = {{127895, -60101}, {15859, -109184}};
+    static const int32_t bn[2][2] = {{-430871397, 983499539}, {430871397, -983499539}};
+    pg_geom a = geom_of(4, av, an, 0), b = geom_of(2, bv, bn, 25933), ma = mirror(&a), mb = mirror(&b);
+    pg_manifold m = collide(&a, &b, fx(0.1)), r = collide(&ma, &mb, fx(0.1));
+    double ref = core_distance(&a, &b) - dbl(b.radius);
+    (void)state;
+    PG_EXPECT_LE(1, m.count, "%s", "contact");
+    PG_EXPECT_LE((min_separation(&m) - ref) * 65536, OVERSTATE_TOL, "%s", "overstated (LSB)");
+    PG_EXPECT_LE((ref - min_separation(&m)) * 65536, SEPARATION_LOW_TOL, "%s", "understated (LSB)");
+    PG_EXPECT_EQ(r.normal.x, -m.normal.x, "%s", "mirror");
+    PG_EXPECT_EQ(r.normal.y, m.normal.y, "%s", "mirror");
+    expect_matching(&m, &r, 1, 0, "mirror");
+    expect_midway(&a, &b, &m, -1);
+}
+
+/* Regression (near pairs, seed 3, pair 175266): a hexagon A and a capsule B whose end lies
+ * 77 LSB from A's vertex 4, 0.6 LSB inside A's face 4. The capsule's edge leaves the face
+ * right there, so the clip's two ends (the end itself, and the cut at the side plane
+ * through vertex 4) round to the same point. The second one used to be dropped: the cut
+ * (separation -27390) here, the end (-27392) in the mirror image, where the two ends
+ * trade places. The deeper one is kept now. */
+static void test_mirror_coincident_ends(void **state)
+{
+    static const int32_t av[6][2] = {{47009, -24922}, {45296, 27915}, {-12965, 51603}, {-48158, 22622}, {-49534, -19427}, {12710, -51666}};
+    static const int32_t an[6][2] = {{1073177971, 34792927}, {404417058, 994669969}, {-682564827, 828870775},
+                                     {-1073167381, 35118036}, {-493831170, -953442332}, {660243837, -846758277}};
+    static const int32_t bv[2][2] = {{-49569, -19496}, {-115871, -68278}};
+    static const int32_t bn[2][2] = {{-636332860, 864871086}, {636332860, -864871086}};
+    pg_geom a = geom_of(6, av, an, 0), b = geom_of(2, bv, bn, 27469), ma = mirror(&a), mb = mirror(&b);
+    pg_manifold m = collide(&a, &b, fx(0.1)), r = collide(&ma, &mb, fx(0.1));
+    double ref = core_distance(&a, &b) - dbl(b.radius);
+    (void)state;
+    PG_EXPECT_EQ(m.count, 1, "%s", "one point");
+    PG_EXPECT_EQ(m.points[0].separation, -27392, "%s", "the deeper end");
+    PG_EXPECT_EQ(m.points[0].id, 0x400u, "%s", "A's face 4, B's vertex 0 (the end itself)");
+    PG_EXPECT_LE((min_separation(&m) - ref) * 65536, OVERSTATE_TOL, "%s", "overstated (LSB)");
+    PG_EXPECT_LE((ref - min_separation(&m)) * 65536, SEPARATION_LOW_TOL, "%s", "understated (LSB)");
+    PG_EXPECT_EQ(r.normal.x, -m.normal.x, "%s", "mirror");
+    PG_EXPECT_EQ(r.normal.y, m.normal.y, "%s", "mirror");
+    expect_matching(&m, &r, 1, 0, "mirror");
+    expect_midway(&a, &b, &m, -1);
+}
+
+/* A plank lying across the edge of a box, tilted down towards its overhang by tau and
+ * apart by g at the box's corner. The plank's bottom edge, clipped at the side plane
+ * through the corner, is cut g above it, while the plank's overhanging corner lies
+ * 0.6 tan(tau) lower, beyond the box: the cut "dips" (collide.c) by far more than
+ * PG__DIP_TOLERANCE, but the edge runs on past the corner rather than towards it, so the
+ * corner is as far from the edge as the cut (to g (1 - cos tau), far below 1 LSB) and the
+ * face contact stays: A's face, kept by the hysteresis (B's is better by less than
+ * PG__REF_TOLERANCE), two points, no switch of reference between resting and hovering.
+ * (With the arguments swapped the plank's face is A's, and the better one anyway.) */
+static void test_overhang_keeps_face(void **state)
+{
+    static const double taus[] = {0.0001, 0.0003, 0.0005}, gaps[] = {2, 10, 30};
+    int t, k, order;
+    (void)state;
+    for (t = 0; t < 3; ++t)
+        for (k = 0; k < 3; ++k) {
+            double tau = taus[t], g = gaps[k] / 65536, xc = 0.6;
+            double yc = g + 0.1 * cos(tau) + (0.5 - xc - 0.1 * sin(tau)) * tan(tau);
+            pg_geom a = make_box(0.5, 0.5, 0, -0.5, 0), b = make_box(0.5, 0.1, xc, yc, -tau);
+            double ref = core_distance(&a, &b);
+            for (order = 0; order < 2; ++order) {
+                pg_manifold m = order ? collide(&b, &a, SPEC) : collide(&a, &b, SPEC);
+                int i;
+                PG_EXPECT_EQ(m.count, 2, "tau %.4f gap %.0f LSB order %d: two points", tau, gaps[k], order);
+                /* A's face: the box's top, or (arguments swapped) the plank's bottom */
+                PG_EXPECT_EQ(m.normal.x, order ? b.normals[0].x : 0, "tau %.4f gap %.0f LSB order %d: A's face normal", tau, gaps[k], order);
+                PG_EXPECT_EQ(m.normal.y, order ? b.normals[0].y : 1 << 30, "tau %.4f gap %.0f LSB order %d: A's face normal", tau, gaps[k],
+                             order);
+                for (i = 0; i < m.count; ++i)
+                    PG_EXPECT_EQ(m.points[i].id >> 16, 0, "tau %.4f gap %.0f LSB order %d: A's face is the reference", tau, gaps[k], order);
+                PG_EXPECT_LE((min_separation(&m) - ref) * 65536, OVERSTATE_TOL, "tau %.4f gap %.0f LSB order %d: overstated (LSB)", tau,
+                             gaps[k], order);
+                PG_EXPECT_LE((ref - min_separation(&m)) * 65536, SEPARATION_LOW_TOL, "tau %.4f gap %.0f LSB order %d: understated (LSB)",
+                             tau, gaps[k], order);
+                expect_midway(order ? &b : &a, order ? &a : &b, &m, -1);
+            }
+        }
+}
+
+/* A segment or capsule end just beyond the end of another one's face (README, "what is
+ * left", used to say the gap could be overstated by up to ~30 LSB there; it was not
+ * bounded). A runs from (0, 0) to (1, 0) and B's end w lies delta beyond A's end at the
+ * height h, B leaning back over A at the tilt theta. Clipping B's edge at A's side plane
+ * x = 1 gives a point at the height h + delta tan(theta), while the distance is
+ * sqrt(h^2 + delta^2) (or, when B's edge passes closer to A's end than w does, that
+ * distance). collide.c used to count a vertex up to PG__REF_TOLERANCE (33 LSB) beyond a
+ * face's end as over the face and report that cut: 57 LSB too much at 60 degrees, 1890 at
+ * 89, and at 89.8 degrees with delta = 33 LSB no contact at all although the gap is
+ * 0.03 m, inside the 0.1 m speculative distance. Now a cut is kept only while it lies at
+ * most PG__DIP_TOLERANCE above the vertex beyond it, or at most that farther from A's end
+ * than the rest of B's edge (then the separation is at most the distance +
+ * OVERSTATE_TOL_EXACT_NORMALS: 1.5 LSB for these faces, whose normals come from the
+ * edges); otherwise the closest features decide and the separation is the distance to
+ * 1/2 LSB (the nearest integer square root, or a rounded separation from a face whose
+ * plane passes through its vertices to 1e-4 LSB; the double reference is exact to far
+ * below that). Heights 0.03 m (cores apart by more than PG__REF_TOLERANCE, the better
+ * face is the reference) and 20 LSB (within it: A's face stays the reference under the
+ * hysteresis unless B's is better by more than 33 LSB). */
 static void check_vertex_gap(const double *tilts, int ntilts, double *worst)
 {
-    static const int32_t deltas[] = {0, 10, REF_TOL, REF_TOL + 1, 2 * REF_TOL};
-    static const double radii[] = {0, 0.01};
-    int t, k, r, order;
+    static const int32_t deltas[] = {0, 1, 10, REF_TOL, REF_TOL + 1, 2 * REF_TOL};
+    static const double radii[] = {0, 0.01}, heights[] = {0.03, 20.0 / 65536};
+    int t, k, r, o, order;
+    midway_seed = 0;
     for (t = 0; t < ntilts; ++t)
         for (k = 0; k < (int)(sizeof deltas / sizeof deltas[0]); ++k)
-            for (r = 0; r < 2; ++r) {
-                double th = tilts[t] * PGT_PI / 180.0, h = 0.03, wx = 1 + deltas[k] / 65536.0;
-                pg_geom a = make_capsule(0, 0, 1, 0, radii[r]), b = make_capsule(wx, h, wx - cos(th), h + sin(th), radii[r]);
-                double ref = core_distance(&a, &b) - dbl(a.radius) - dbl(b.radius);
-                PG_EXPECT_EQ(b.vertices[0].x, fx(1) + deltas[k], "%s", "w lies delta beyond A's end");
-                for (order = 0; order < 2; ++order) {
-                    pg_manifold m = order ? collide(&b, &a, fx(0.1)) : collide(&a, &b, fx(0.1));
-                    double got = 1e300, err;
-                    int i;
-                    PG_EXPECT_LE(1, m.count, "tilt %.1f deg, delta %d LSB, radius %.2f, order %d: no contact, gap %.6f", tilts[t],
-                                 deltas[k], radii[r], order, ref);
-                    for (i = 0; i < m.count; ++i)
-                        if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
-                    err = (got - ref) * 65536.0;
-                    if (m.count > 0 && err > *worst) *worst = err;
-                    if (deltas[k] > REF_TOL)
-                        PG_EXPECT_LE(fabs(err), 0.5 + 1e-6, "tilt %.1f deg, delta %d LSB, radius %.2f, order %d: vertex to vertex",
-                                     tilts[t], deltas[k], radii[r], order);
-                    PG_EXPECT_LE(err, README_VERTEX_GAP_LSB, "tilt %.1f deg, delta %d LSB, radius %.2f, order %d: overstated gap (LSB)",
-                                 tilts[t], deltas[k], radii[r], order);
+            for (r = 0; r < 2; ++r)
+                for (o = 0; o < 2; ++o) {
+                    double th = tilts[t] * PGT_PI / 180.0, h = heights[o], wx = 1 + deltas[k] / 65536.0;
+                    pg_geom a = make_capsule(0, 0, 1, 0, radii[r]), b = make_capsule(wx, h, wx - cos(th), h + sin(th), radii[r]);
+                    double ref = core_distance(&a, &b) - dbl(a.radius) - dbl(b.radius);
+                    /* The cut lies delta tan(theta) above w: past 2.5 LSB the rounded dip
+                     * exceeds PG__DIP_TOLERANCE for sure, and B leaning away (theta >= 90
+                     * degrees) misses A's face. With the cores apart by more than
+                     * PG__REF_TOLERANCE A's face is the better one, so the closest features
+                     * decide: exact to 1/2 LSB. (Within it, B's face, the better one, is
+                     * tried first, and its clip may dip by up to PG__DIP_TOLERANCE.) */
+                    int exact = o == 0 && deltas[k] > 0 && (th >= PGT_PI / 2 || deltas[k] * tan(th) > 2.5);
+                    PG_EXPECT_EQ(b.vertices[0].x, fx(1) + deltas[k], "%s", "w lies delta beyond A's end");
+                    for (order = 0; order < 2; ++order) {
+                        pg_manifold m = order ? collide(&b, &a, fx(0.1)) : collide(&a, &b, fx(0.1));
+                        double got = 1e300, err;
+                        int i;
+                        PG_EXPECT_LE(1, m.count, "tilt %.1f deg, delta %d LSB, height %.6f, radius %.2f, order %d: no contact, gap %.6f",
+                                     tilts[t], deltas[k], h, radii[r], order, ref);
+                        for (i = 0; i < m.count; ++i)
+                            if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
+                        err = (got - ref) * 65536.0;
+                        if (m.count > 0 && err > *worst) *worst = err;
+                        PG_EXPECT_LE(err, exact ? 0.5 + 1e-3 : OVERSTATE_TOL_EXACT_NORMALS,
+                                     "tilt %.1f deg, delta %d LSB, height %.6f, radius %.2f, order %d: overstated gap (LSB)", tilts[t],
+                                     deltas[k], h, radii[r], order);
+                        PG_EXPECT_LE(-err, exact ? 0.5 + 1e-3 : SEPARATION_LOW_TOL,
+                                     "tilt %.1f deg, delta %d LSB, height %.6f, radius %.2f, order %d: understated gap (LSB)", tilts[t],
+                                     deltas[k], h, radii[r], order);
+                        expect_midway(order ? &b : &a, order ? &a : &b, &m, -1);
+                    }
                 }
-            }
 }
 
 static void test_segment_vertex_gap(void **state)
@@ -1329,146 +1472,234 @@ static void test_segment_vertex_gap(void **state)
     double worst = 0;
     (void)state;
     check_vertex_gap(tilts, 4, &worst);
-    print_message("segment vertex gap: worst overstatement %.2f LSB (README: up to ~30)\n", worst);
+    print_message("segment vertex gap: worst overstatement %.2f LSB (bound %.2f)\n", worst, OVERSTATE_TOL_EXACT_NORMALS);
 }
 
-#ifdef PGT_KNOWN_BUG_VERTEX_GAP
 static void test_segment_vertex_gap_steep(void **state)
 {
-    static const double tilts[] = {45, 60, 80, 89, 89.8};
+    static const double tilts[] = {45, 60, 80, 89, 89.8, 90, 90.2, 100, 135, 170};
     double worst = 0;
     (void)state;
-    check_vertex_gap(tilts, 5, &worst);
-    print_message("segment vertex gap, steep: worst overstatement %.2f LSB\n", worst);
+    check_vertex_gap(tilts, 10, &worst);
+    print_message("segment vertex gap, steep: worst overstatement %.2f LSB (bound %.2f)\n", worst, OVERSTATE_TOL_EXACT_NORMALS);
 }
+
+/* Pairs per seed in test_random_pairs and test_random_near_pairs: about 3 s in all in a
+ * release build, a quarter as many without NDEBUG (debug and sanitizer builds are some 10
+ * times slower). Build with -DPGT_RANDOM_PAIRS=N -DPGT_NEAR_PAIRS=M to search longer. */
+#ifndef PGT_RANDOM_PAIRS
+#ifdef NDEBUG
+#define PGT_RANDOM_PAIRS 250000
+#else
+#define PGT_RANDOM_PAIRS 62500
+#endif
+#endif
+#ifndef PGT_NEAR_PAIRS
+#ifdef NDEBUG
+#define PGT_NEAR_PAIRS 25000
+#else
+#define PGT_NEAR_PAIRS 6250
+#endif
 #endif
 
-static void test_random_pairs(void **state)
+typedef struct pair_stats {
+    int checked, touching, tolerant, exact_swaps;
+    double worst_apart, worst_over, worst_deep; /* m */
+} pair_stats;
+
+/* Every check of one pair against the double reference, its mirror image, a translated
+ * copy (the shift drawn from rng) and the swapped pair. */
+static void check_pair(const pg_geom *a, const pg_geom *b, pgt_rng *rng, unsigned long long seed, int iter, pair_stats *st)
 {
-    pgt_rng rng = pgt_rng_seed(2024);
-    int iter, checked = 0, touching = 0, tolerant = 0, exact_swaps = 0;
-    double worst_apart = 0, worst_deep = 0;
-    (void)state;
-    for (iter = 0; iter < 30000; ++iter) {
+    pg_fix spec = fx(0.1);
+    pg_manifold m = collide(a, b, spec), w;
+    double radii = dbl(a->radius) + dbl(b->radius), d = core_distance(a, b), ref, got = 1e300;
+    /* collide.c's own quantities, only to tell which of its tolerances can act: two
+     * polygons (segments and capsules included) have SAT face separations, and the
+     * reference is the better face outright ("far") once the better one exceeds
+     * PG__REF_TOLERANCE */
+    int poly_pair = a->count >= 2 && b->count >= 2, far;
+    int64_t sa2 = poly_pair ? best_face_sep2(a, b) : 0, sb2 = poly_pair ? best_face_sep2(b, a) : 0;
+    double sat = (double)(sa2 > sb2 ? sa2 : sb2) / 2147483648.0 / 65536.0; /* m */
+    int i;
+    far = poly_pair && (sa2 > sb2 ? sa2 : sb2) > ((int64_t)REF_TOL << 31);
+    ref = d > 0 ? d - radii : sat_depth(a, b) - radii;
+    /* reported separations lie within [distance - SEPARATION_LOW_TOL, distance +
+     * OVERSTATE_TOL] when the cores are apart (below), so a contact is never dropped
+     * within the speculative distance less OVERSTATE_TOL */
+    if (ref > 0.1 + SEPARATION_LOW_TOL / 65536) {
+        PG_EXPECT_EQ(m.count, 0, "seed %llu iter %d: reference separation %.9f", seed, iter, ref);
+        return;
+    }
+    if (ref <= 0.1 - OVERSTATE_TOL / 65536) PG_EXPECT_LE(1, m.count, "seed %llu iter %d: no contact, reference %.9f", seed, iter, ref);
+    if (m.count == 0) return;
+    ++st->checked;
+    expect_unit(m.normal);
+    for (i = 0; i < m.count; ++i)
+        if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
+    if (d > 0) {
+        /* apart: the separation is the distance, at most SEPARATION_LOW_TOL below it
+         * (rounding, derived above) and at most OVERSTATE_TOL above it, unless
+         * collide.c's reference hysteresis acts: cores within PG__REF_TOLERANCE keep
+         * A's face while B's is better by up to that, and of a segment's face (which
+         * has no inside) an incident vertex can then lie on the far side of the line
+         * although the cores are apart. Then the separation is still at least the
+         * reference face's, less 1 (two roundings), and the reference face separates
+         * by at least sat - PG__REF_TOLERANCE. */
+        double err = got - ref, low = ref;
+        if (poly_pair && !far) {
+            low = sat - REF_TOL / 65536.0 - radii;
+            if (low > ref) low = ref;
+            ++st->tolerant;
+        }
+        if (fabs(err) > st->worst_apart) st->worst_apart = fabs(err);
+        if (err > st->worst_over) st->worst_over = err;
+        if (err > OVERSTATE_TOL / 65536 || got < low - SEPARATION_LOW_TOL / 65536) {
+            print_error("seed %llu iter %d: apart, separation %.9f reference %.9f lower bound %.9f (counts %d %d)\n", seed, iter, got, ref, low,
+                        a->count, b->count);
+            fail();
+        }
+    } else {
+        /* overlapping: the depth along the best face axis, A preferred within 33 LSB */
+        double err = got - ref;
+        ++st->touching;
+        if (fabs(err) > st->worst_deep) st->worst_deep = fabs(err);
+        if (err > 3.0 / 65536 || err < -40.0 / 65536) {
+            print_error("seed %llu iter %d: overlap, separation %.6f reference %.6f (counts %d %d)\n", seed, iter, got, ref, a->count, b->count);
+            fail();
+        }
+    }
+    expect_midway(a, b, &m, iter);
+    /* exact mirror symmetry */
+    {
+        pg_geom ma = mirror(a), mb = mirror(b);
+        char what[64];
+        snprintf(what, sizeof what, "mirror seed %llu iter %d", seed, iter);
+        w = collide(&ma, &mb, spec);
+        PG_EXPECT_EQ(w.normal.x, -m.normal.x, "%s", what);
+        PG_EXPECT_EQ(w.normal.y, m.normal.y, "%s", what);
+        expect_matching(&m, &w, 1, 0, what);
+    }
+    /* exact translation invariance */
+    {
+        pg_fix dx = (pg_fix)(pgt_below(rng, 2 * 900 * 65536u) - 900 * 65536), dy = (pg_fix)(pgt_below(rng, 2 * 900 * 65536u) - 900 * 65536);
+        pg_geom ta = shifted(a, dx, dy), tb = shifted(b, dx, dy);
+        w = collide(&ta, &tb, spec);
+        PG_EXPECT_EQ(w.count, m.count, "translate seed %llu iter %d", seed, iter);
+        PG_EXPECT_EQ(w.normal.x, m.normal.x, "translate seed %llu iter %d", seed, iter);
+        PG_EXPECT_EQ(w.normal.y, m.normal.y, "translate seed %llu iter %d", seed, iter);
+        for (i = 0; i < m.count; ++i) {
+            PG_EXPECT_EQ(w.points[i].point.x, m.points[i].point.x + dx, "translate seed %llu iter %d", seed, iter);
+            PG_EXPECT_EQ(w.points[i].point.y, m.points[i].point.y + dy, "translate seed %llu iter %d counts %d %d id %x n %d %d", seed, iter, a->count, b->count, m.points[i].id, m.normal.x, m.normal.y);
+            PG_EXPECT_EQ(w.points[i].separation, m.points[i].separation, "translate seed %llu iter %d", seed, iter);
+            PG_EXPECT_EQ(w.points[i].id, m.points[i].id, "translate seed %llu iter %d", seed, iter);
+        }
+    }
+    /* swapped arguments. collide.c's choices do not depend on the order when a
+     * circle is involved, or when the cores are apart by more than PG__REF_TOLERANCE
+     * on the better face axis and the two faces do not tie ("A on ties"): the same
+     * reference face and incident edge, the same arithmetic, the normal reported
+     * negated and the ids naming A and B the other way round. Exactly, but for the
+     * midpoint of two vertices (kind 2): va + round((vb - va + k n) / 2) and
+     * vb + round((va - vb + k n) / 2) differ by 1 LSB in a component where the half
+     * is a tie (rounding ties away from zero is not translation invariant). Otherwise
+     * A's face stays the reference while B's is better by up to PG__REF_TOLERANCE:
+     * the depths differ by up to that plus rounding. */
+    {
+        double got2 = 1e300;
+        w = collide(b, a, spec);
+        PG_EXPECT_LE(1, w.count, "swap seed %llu iter %d", seed, iter);
+        if (!poly_pair || (far && sa2 != sb2)) {
+            ++st->exact_swaps;
+            PG_EXPECT_EQ(w.count, m.count, "swap seed %llu iter %d", seed, iter);
+            PG_EXPECT_EQ(w.normal.x, -m.normal.x, "swap seed %llu iter %d", seed, iter);
+            PG_EXPECT_EQ(w.normal.y, -m.normal.y, "swap seed %llu iter %d", seed, iter);
+            for (i = 0; i < m.count && i < w.count; ++i) {
+                int tol = m.points[i].id >> 16 == 2 ? 1 : 0;
+                PG_EXPECT_EQ(w.points[i].id, swapped_id(m.points[i].id), "swap seed %llu iter %d point %d", seed, iter, i);
+                PG_EXPECT_EQ(w.points[i].separation, m.points[i].separation, "swap seed %llu iter %d point %d", seed, iter, i);
+                PG_EXPECT_LE(abs(w.points[i].point.x - m.points[i].point.x), tol, "swap seed %llu iter %d point %d", seed, iter, i);
+                PG_EXPECT_LE(abs(w.points[i].point.y - m.points[i].point.y), tol, "swap seed %llu iter %d point %d", seed, iter, i);
+            }
+        } else {
+            for (i = 0; i < w.count; ++i)
+                if (dbl(w.points[i].separation) < got2) got2 = dbl(w.points[i].separation);
+            PG_EXPECT_LE(fabs(got2 - got), 40.0 / 65536, "swap seed %llu iter %d", seed, iter);
+        }
+    }
+}
+
+static void print_stats(const char *what, unsigned long long seed, int pairs, const pair_stats *st)
+{
+    print_message("%s, seed %llu: %d of %d with contacts (%d overlapping, %d apart within the hysteresis, %d swapped exactly); "
+                  "worst |error| apart %.3g LSB (overstated %.3g, bound %.3g), overlapping %.3g LSB\n",
+                  what, seed, st->checked, pairs, st->touching, st->tolerant, st->exact_swaps, st->worst_apart * 65536,
+                  st->worst_over * 65536, OVERSTATE_TOL, st->worst_deep * 65536);
+}
+
+static void random_pairs(unsigned long long seed, int pairs)
+{
+    pgt_rng rng = pgt_rng_seed(seed);
+    pair_stats st;
+    int iter;
+    memset(&st, 0, sizeof st);
+    midway_seed = seed;
+    for (iter = 0; iter < pairs; ++iter) {
         /* One random draw per statement, in this order: the order in which a call's
          * arguments are evaluated is unspecified, and gcc and clang differ. */
         pg_geom a = random_shape(&rng, 0, 0), b;
         double bx = rnd(&rng, -2.5, 2.5);
         double by = rnd(&rng, -2.5, 2.5);
         b = random_shape(&rng, bx, by);
-        pg_fix spec = fx(0.1);
-        pg_manifold m = collide(&a, &b, spec), w;
-        double radii = dbl(a.radius) + dbl(b.radius), d = core_distance(&a, &b), ref, got = 1e300;
-        /* collide.c's own quantities, only to tell which of its tolerances can act: two
-         * polygons (segments and capsules included) have SAT face separations, and the
-         * reference is the better face outright ("far") once the better one exceeds
-         * PG__REF_TOLERANCE */
-        int poly_pair = a.count >= 2 && b.count >= 2, far;
-        int64_t sa2 = poly_pair ? best_face_sep2(&a, &b) : 0, sb2 = poly_pair ? best_face_sep2(&b, &a) : 0;
-        double sat = (double)(sa2 > sb2 ? sa2 : sb2) / 2147483648.0 / 65536.0; /* m */
-        int i;
-        far = poly_pair && (sa2 > sb2 ? sa2 : sb2) > ((int64_t)REF_TOL << 31);
-        ref = d > 0 ? d - radii : sat_depth(&a, &b) - radii;
-        if (ref > 0.1 + 1e-4) {
-            PG_EXPECT_EQ(m.count, 0, "iter %d: reference separation %.6f", iter, ref);
-            continue;
-        }
-        if (ref < 0.1 - 1e-3) PG_EXPECT_LE(1, m.count, "iter %d: no contact, reference %.6f", iter, ref);
-        if (m.count == 0) continue;
-        ++checked;
-        expect_unit(m.normal);
-        for (i = 0; i < m.count; ++i)
-            if (dbl(m.points[i].separation) < got) got = dbl(m.points[i].separation);
-        if (d > 0) {
-            /* apart: the separation is the distance, at most SEPARATION_LOW_TOL below it
-             * (rounding, derived above), unless one of collide.c's two tolerances can act:
-             * cores within PG__REF_TOLERANCE keep A's face while B's is better by up to
-             * that, and a vertex up to PG__REF_TOLERANCE beyond an edge's end counts its
-             * distance to the edge's line (shorter than the distance). Then the separation
-             * is still at least the reference face's, less 1 (two roundings; vertex to
-             * vertex: the distance - 1/2 >= sat - FACE_ETA - 1/2), and the reference face
-             * separates by sat, or by sat - PG__REF_TOLERANCE when not far. */
-            double err = got - ref, low = ref;
-            if (poly_pair && (!far || slack_distance(&a, &b) < d * 65536.0)) {
-                low = sat - (far ? 0 : REF_TOL / 65536.0) - radii;
-                ++tolerant;
-            }
-            if (fabs(err) > worst_apart) worst_apart = fabs(err);
-            if (err > 3.0 / 65536 || got < low - SEPARATION_LOW_TOL / 65536) {
-                print_error("iter %d: apart, separation %.9f reference %.9f lower bound %.9f (counts %d %d)\n", iter, got, ref, low,
-                            a.count, b.count);
-                fail();
-            }
-        } else {
-            /* overlapping: the depth along the best face axis, A preferred within 33 LSB */
-            double err = got - ref;
-            ++touching;
-            if (fabs(err) > worst_deep) worst_deep = fabs(err);
-            if (err > 3.0 / 65536 || err < -40.0 / 65536) {
-                print_error("iter %d: overlap, separation %.6f reference %.6f (counts %d %d)\n", iter, got, ref, a.count, b.count);
-                fail();
-            }
-        }
-        expect_midway(&a, &b, &m, iter);
-        /* exact mirror symmetry */
-        {
-            pg_geom ma = mirror(&a), mb = mirror(&b);
-            w = collide(&ma, &mb, spec);
-            PG_EXPECT_EQ(w.normal.x, -m.normal.x, "mirror iter %d", iter);
-            PG_EXPECT_EQ(w.normal.y, m.normal.y, "mirror iter %d", iter);
-            expect_matching(&m, &w, 1, 0, "mirror");
-        }
-        /* exact translation invariance */
-        {
-            pg_fix dx = (pg_fix)(pgt_below(&rng, 2 * 900 * 65536u) - 900 * 65536), dy = (pg_fix)(pgt_below(&rng, 2 * 900 * 65536u) - 900 * 65536);
-            pg_geom ta = shifted(&a, dx, dy), tb = shifted(&b, dx, dy);
-            w = collide(&ta, &tb, spec);
-            PG_EXPECT_EQ(w.count, m.count, "translate iter %d", iter);
-            PG_EXPECT_EQ(w.normal.x, m.normal.x, "translate iter %d", iter);
-            PG_EXPECT_EQ(w.normal.y, m.normal.y, "translate iter %d", iter);
-            for (i = 0; i < m.count; ++i) {
-                PG_EXPECT_EQ(w.points[i].point.x, m.points[i].point.x + dx, "translate iter %d", iter);
-                PG_EXPECT_EQ(w.points[i].point.y, m.points[i].point.y + dy, "translate iter %d counts %d %d id %x n %d %d", iter, a.count, b.count, m.points[i].id, m.normal.x, m.normal.y);
-                PG_EXPECT_EQ(w.points[i].separation, m.points[i].separation, "translate iter %d", iter);
-                PG_EXPECT_EQ(w.points[i].id, m.points[i].id, "translate iter %d", iter);
-            }
-        }
-        /* swapped arguments. collide.c's choices do not depend on the order when a
-         * circle is involved, or when the cores are apart by more than PG__REF_TOLERANCE
-         * on the better face axis and the two faces do not tie ("A on ties"): the same
-         * reference face and incident edge, the same arithmetic, the normal reported
-         * negated and the ids naming A and B the other way round. Exactly, but for the
-         * midpoint of two vertices (kind 2): va + round((vb - va + k n) / 2) and
-         * vb + round((va - vb + k n) / 2) differ by 1 LSB in a component where the half
-         * is a tie (rounding ties away from zero is not translation invariant). Otherwise
-         * A's face stays the reference while B's is better by up to PG__REF_TOLERANCE:
-         * the depths differ by up to that plus rounding. */
-        {
-            double got2 = 1e300;
-            w = collide(&b, &a, spec);
-            PG_EXPECT_LE(1, w.count, "swap iter %d", iter);
-            if (!poly_pair || (far && sa2 != sb2)) {
-                ++exact_swaps;
-                PG_EXPECT_EQ(w.count, m.count, "swap iter %d", iter);
-                PG_EXPECT_EQ(w.normal.x, -m.normal.x, "swap iter %d", iter);
-                PG_EXPECT_EQ(w.normal.y, -m.normal.y, "swap iter %d", iter);
-                for (i = 0; i < m.count && i < w.count; ++i) {
-                    int tol = m.points[i].id >> 16 == 2 ? 1 : 0;
-                    PG_EXPECT_EQ(w.points[i].id, swapped_id(m.points[i].id), "swap iter %d point %d", iter, i);
-                    PG_EXPECT_EQ(w.points[i].separation, m.points[i].separation, "swap iter %d point %d", iter, i);
-                    PG_EXPECT_LE(abs(w.points[i].point.x - m.points[i].point.x), tol, "swap iter %d point %d", iter, i);
-                    PG_EXPECT_LE(abs(w.points[i].point.y - m.points[i].point.y), tol, "swap iter %d point %d", iter, i);
-                }
-            } else {
-                for (i = 0; i < w.count; ++i)
-                    if (dbl(w.points[i].separation) < got2) got2 = dbl(w.points[i].separation);
-                PG_EXPECT_LE(fabs(got2 - got), 40.0 / 65536, "swap iter %d", iter);
-            }
-        }
+        check_pair(&a, &b, &rng, seed, iter, &st);
     }
-    print_message("random pairs: %d with contacts (%d overlapping, %d apart where a tolerance can act, %d swapped exactly); "
-                  "worst |error| apart %.3g m, overlapping %.3g m\n",
-                  checked, touching, tolerant, exact_swaps, worst_apart, worst_deep);
+    print_stats("random pairs", seed, pairs, &st);
+}
+
+/* Pairs whose cores are apart by 0 to 80 LSB, where most of collide.c's decisions are
+ * close: B is moved from A's centre along a random direction until the distance reaches
+ * the target (bisection over whole LSB steps). */
+static void near_pairs(unsigned long long seed, int pairs)
+{
+    pgt_rng rng = pgt_rng_seed(seed);
+    pair_stats st;
+    int iter;
+    memset(&st, 0, sizeof st);
+    midway_seed = seed;
+    for (iter = 0; iter < pairs; ++iter) {
+        pg_geom a = random_shape(&rng, 0, 0), b = random_shape(&rng, 0, 0), c;
+        double ang = rnd(&rng, 0, 2 * PGT_PI);
+        double target = rnd(&rng, 0, 80) / 65536;
+        int32_t lo = 0, hi = 1 << 19;
+        while (hi - lo > 1) {
+            int32_t mid = lo + (hi - lo) / 2;
+            c = shifted(&b, (pg_fix)lround(mid * cos(ang)), (pg_fix)lround(mid * sin(ang)));
+            if (core_distance(&a, &c) < target) lo = mid;
+            else hi = mid;
+        }
+        c = shifted(&b, (pg_fix)lround(hi * cos(ang)), (pg_fix)lround(hi * sin(ang)));
+        check_pair(&a, &c, &rng, seed, iter, &st);
+    }
+    print_stats("near pairs", seed, pairs, &st);
+}
+
+/* Seeds 7, 11 and 99 found the mirror asymmetry (pg__point_segment measured from an
+ * edge's first vertex) in 2 million pairs each; seed 11 the overstated gap of a polygon
+ * pair (test_vertex_beyond_face_polygons). */
+static void test_random_pairs(void **state)
+{
+    static const unsigned long long seeds[] = {7, 11, 99, 2024};
+    int k;
+    (void)state;
+    for (k = 0; k < (int)(sizeof seeds / sizeof seeds[0]); ++k) random_pairs(seeds[k], PGT_RANDOM_PAIRS);
+}
+
+static void test_random_near_pairs(void **state)
+{
+    static const unsigned long long seeds[] = {7, 11, 99, 2024};
+    int k;
+    (void)state;
+    for (k = 0; k < (int)(sizeof seeds / sizeof seeds[0]); ++k) near_pairs(seeds[k], PGT_NEAR_PAIRS);
 }
 
 int main(void)
@@ -1496,11 +1727,14 @@ int main(void)
         cmocka_unit_test(test_transform),
         cmocka_unit_test(test_far_from_origin),
         cmocka_unit_test(test_apart_tilted_faces),
+        cmocka_unit_test(test_vertex_beyond_face_polygons),
+        cmocka_unit_test(test_mirror_near_tie),
+        cmocka_unit_test(test_mirror_coincident_ends),
+        cmocka_unit_test(test_overhang_keeps_face),
         cmocka_unit_test(test_segment_vertex_gap),
-#ifdef PGT_KNOWN_BUG_VERTEX_GAP
         cmocka_unit_test(test_segment_vertex_gap_steep),
-#endif
         cmocka_unit_test(test_random_pairs),
+        cmocka_unit_test(test_random_near_pairs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
