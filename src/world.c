@@ -49,32 +49,32 @@ pg_result pg__fail(const pg_world *world, pg_result r, const char *detail)
     return r;
 }
 
-pg_result pg__fail_value(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *bound)
+/* "before VALUE after" into buf */
+static void join_value(char *buf, size_t cap, const char *before, pg_fix value, const char *after)
 {
-    char buf[144], num[PG_FIX_FORMAT_MAX];
+    char num[PG_FIX_FORMAT_MAX];
     size_t pos = 0;
     pg_fix_format(value, num, sizeof num);
     buf[0] = '\0';
-    copy_text(buf, sizeof buf, &pos, what);
-    copy_text(buf, sizeof buf, &pos, " ");
-    copy_text(buf, sizeof buf, &pos, num);
-    copy_text(buf, sizeof buf, &pos, " ");
-    copy_text(buf, sizeof buf, &pos, bound);
+    copy_text(buf, cap, &pos, before);
+    copy_text(buf, cap, &pos, " ");
+    copy_text(buf, cap, &pos, num);
+    copy_text(buf, cap, &pos, " ");
+    copy_text(buf, cap, &pos, after);
+}
+
+pg_result pg__fail_value(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *bound)
+{
+    char buf[144];
+    join_value(buf, sizeof buf, what, value, bound);
     return pg__fail(world, r, buf);
 }
 
 pg_result pg__fail_limit(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *relation, pg_fix limit,
                          const char *unit)
 {
-    char buf[144], num[PG_FIX_FORMAT_MAX];
-    size_t pos = 0;
-    pg_fix_format(limit, num, sizeof num);
-    buf[0] = '\0';
-    copy_text(buf, sizeof buf, &pos, relation);
-    copy_text(buf, sizeof buf, &pos, " ");
-    copy_text(buf, sizeof buf, &pos, num);
-    copy_text(buf, sizeof buf, &pos, " ");
-    copy_text(buf, sizeof buf, &pos, unit);
+    char buf[144];
+    join_value(buf, sizeof buf, relation, limit, unit);
     return pg__fail_value(world, r, what, value, buf);
 }
 
