@@ -5,9 +5,10 @@
  *   One pass over the text, line by line, token by token, with a cursor that never
  *   passes `length`. No allocation, no recursion, no NUL needed. The same pass runs in
  *   two modes: READ (world == NULL) collects the settings, counts bodies and shapes and
- *   checks every value it can without a world (ranges, geometry through pg_geometry_*);
- *   LOAD repeats it and makes the bodies. pg_scene_load runs READ first, so text errors
- *   are found before anything is created.
+ *   checks every value it can without a world (ranges, geometry through pg_geometry_*,
+ *   each dynamic body's mass data as pg_shape_create will check it); LOAD repeats it and
+ *   makes the bodies. pg_scene_load runs READ first, with the room the world has left
+ *   for bodies and shapes, so every refusal is found before anything is created.
  *
  * WRITER
  *   The world's def, then every used body slot as a `body` block. Values that equal the
@@ -217,6 +218,18 @@ typedef struct scene_parser {
     uint32_t body_shapes;
     int body_made;
     pg_body_id body_id;
+
+    /* READ: the collision forms and densities of the shapes of the body being read, for
+     * the mass checks pg_shape_create makes as each shape is added (about 9 KB) */
+    pg_geom mass_geoms[64];
+    pg_fix mass_densities[64];
+
+    /* READ for pg_scene_load: the free body and shape slots of the world, and where the
+     * scene first needs more (over_kind 1: bodies, 2: shapes; 0: it fits) */
+    int room_given;
+    uint32_t room_bodies, room_shapes;
+    int over_kind;
+    uint32_t over_line, over_count;
 } scene_parser;
 
 /* ---- errors ------------------------------------------------------------------------------------ */
@@ -800,21 +813,21 @@ static pg_result fail_geometry(scene_parser *P, pg_result r, uint32_t column, co
     return P->result;
 }
 
-/* The geometry a ready-made kind makes, validated as pg_make_* does (shape.c). */
-static pg_result make_geometry(int kind, const pg_fix *size, pg_geometry *g)
+/* The geometry a ready-made kind makes (make_table[kind].shapes of them: two for a
+ * star), validated as pg_make_* does (shape.c). */
+static pg_result make_geometry(int kind, const pg_fix *size, pg_geometry g[2])
 {
-    pg_geometry second;
     pg_result r;
     switch (kind) {
-    case 0: return pg_geometry_circle(pg_v2_zero(), size[0], g);
+    case 0: return pg_geometry_circle(pg_v2_zero(), size[0], &g[0]);
     case 1:
         if (size[0] < 0) return PG_ERR_DEGENERATE;
-        return pg_geometry_capsule(pg_v2(-size[0] / 2, 0), pg_v2(size[0] - size[0] / 2, 0), size[1], g);
-    case 3: return pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER, g);
+        return pg_geometry_capsule(pg_v2(-size[0] / 2, 0), pg_v2(size[0] - size[0] / 2, 0), size[1], &g[0]);
+    case 3: return pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER, &g[0]);
     case 4:
-        r = pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER, g);
-        return r != PG_OK ? r : pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER + PG_ANGLE_HALF, &second);
-    default: return pg_geometry_box(size[0] / 2, size[1] / 2, pg_v2_zero(), 0, g);
+        r = pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER, &g[0]);
+        return r != PG_OK ? r : pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER + PG_ANGLE_HALF, &g[1]);
+    default: return pg_geometry_box(size[0] / 2, size[1] / 2, pg_v2_zero(), 0, &g[0]);
     }
 }
 
@@ -852,6 +865,11 @@ static pg_result count_objects(scene_parser *P, uint32_t bodies, uint32_t shapes
 {
     P->bodies = P->bodies > 0xFFFFFFFFu - bodies ? 0xFFFFFFFFu : P->bodies + bodies;
     P->shapes = P->shapes > 0xFFFFFFFFu - shapes ? 0xFFFFFFFFu : P->shapes + shapes;
+    if (P->mode == MODE_READ && P->room_given && P->over_kind == 0 && (P->bodies > P->room_bodies || P->shapes > P->room_shapes)) {
+        P->over_kind = P->bodies > P->room_bodies ? 1 : 2;
+        P->over_line = P->line;
+        P->over_count = P->over_kind == 1 ? P->bodies : P->shapes;
+    }
     if (P->mode == MODE_READ && (P->settings_seen & ((uint64_t)1 << P_MAX_BODIES)) != 0 && P->bodies > P->def.max_bodies) {
         msg m = fail(P, PG_ERR_CAPACITY, 1);
         msg_put(&m, "body ");
@@ -877,6 +895,32 @@ static pg_result count_objects(scene_parser *P, uint32_t bodies, uint32_t shapes
     return PG_OK;
 }
 
+/* READ: what pg_shape_create will refuse when shape `g` (the body's shape number n, from
+ * 0) is added to a dynamic body: the body's mass data with its shapes so far
+ * (pg__body_mass_problem), as a message, or NULL. Loading adds the shapes one by one and
+ * checks each step, so reading does too. */
+static const char *mass_problem(scene_parser *P, uint32_t n, const pg_geometry *g, pg_fix density, int rotates)
+{
+    const pg_geom *geoms[64];
+    uint32_t i;
+    if (n >= 64) return NULL; /* refused before: a body has at most 64 shapes */
+    pg__shape_build_local(g, &P->mass_geoms[n]);
+    P->mass_densities[n] = density;
+    for (i = 0; i <= n; ++i) geoms[i] = &P->mass_geoms[i];
+    return pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, (int)n + 1), rotates);
+}
+
+/* "cannot make the <kind>: <why>" as PG_ERR_ENVELOPE at `column` of the current line. */
+static pg_result fail_mass(scene_parser *P, uint32_t column, const char *kind, const char *why)
+{
+    msg m = fail(P, PG_ERR_ENVELOPE, column);
+    msg_put(&m, "cannot make the ");
+    msg_put(&m, kind);
+    msg_put(&m, ": ");
+    msg_put(&m, why);
+    return P->result;
+}
+
 /* KIND SIZE... [properties] */
 static pg_result parse_make(scene_parser *P, int kind, token keyword)
 {
@@ -884,7 +928,7 @@ static pg_result parse_make(scene_parser *P, int kind, token keyword)
     pg_fix size[2] = {0, 0};
     uint32_t size_column = 0;
     props pr;
-    pg_geometry g;
+    pg_geometry g[2];
     pg_result r;
     int i;
     props_init(&pr, kind == 5 ? PG_BODY_STATIC : PG_BODY_DYNAMIC);
@@ -905,8 +949,15 @@ static pg_result parse_make(scene_parser *P, int kind, token keyword)
     r = check_body_props(P, &pr);
     if (r == PG_OK) r = check_density(P, &pr, pr.bd.type, token_column(P, keyword));
     if (r != PG_OK) return r;
-    r = make_geometry(kind, size, &g);
+    r = make_geometry(kind, size, g);
     if (r != PG_OK) return fail_geometry(P, r, size_column, mk->name);
+    if (P->mode == MODE_READ && pr.bd.type == PG_BODY_DYNAMIC) { /* pg_make_* checks the whole body, then each shape as it adds it */
+        uint32_t k;
+        for (k = 0; k < mk->shapes; ++k) {
+            const char *why = mass_problem(P, k, &g[k], pr.sd.density, !pr.bd.fixed_rotation);
+            if (why != NULL) return fail_mass(P, size_column, mk->name, why);
+        }
+    }
     r = count_objects(P, 1, mk->shapes);
     if (r != PG_OK || P->mode == MODE_READ) return r;
     {
@@ -1044,6 +1095,19 @@ static pg_result parse_shape(scene_parser *P)
     }
     r = make_open_body(P);
     if (r != PG_OK) return r;
+    if (P->mode == MODE_READ && P->body.bd.type == PG_BODY_DYNAMIC) {
+        const char *why = mass_problem(P, P->body_shapes, &g, pr.sd.density, !P->body.bd.fixed_rotation);
+        if (why != NULL) {
+            msg m = fail(P, PG_ERR_ENVELOPE, kind_column);
+            msg_put(&m, "cannot add the ");
+            msg_put(&m, kinds[kind]);
+            msg_put(&m, " to the body of line ");
+            msg_u64(&m, P->body_line);
+            msg_put(&m, ": ");
+            msg_put(&m, why);
+            return P->result;
+        }
+    }
     P->body_shapes += 1u;
     r = count_objects(P, 0, 1);
     if (r != PG_OK || P->mode == MODE_READ) return r;
@@ -1280,9 +1344,12 @@ pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_sce
     if (world == NULL) return fail_null(error, "world");
     if (text == NULL) return fail_null(error, "text");
     parser_init(&P, text, length, error, NULL); /* check everything first */
+    wd = pg_world_get_def(world);
+    P.room_given = 1; /* and note where the scene outgrows the world's free slots */
+    P.room_bodies = wd.max_bodies - world->body_count;
+    P.room_shapes = wd.max_shapes - world->shape_count;
     r = run(&P);
     if (r != PG_OK) return r;
-    wd = pg_world_get_def(world);
     which = differing_setting(&wd, &P.def);
     if (which >= 0) {
         const uint64_t bit = (uint64_t)1 << which;
@@ -1294,6 +1361,21 @@ pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_sce
         msg_put(&m, prop_name(which));
         msg_put(&m, given ? " differs from the scene's" : " differs from the default the scene uses");
         msg_put(&m, ": create the world from pg_scene_read_def's def");
+        return P.result;
+    }
+    if (P.over_kind != 0) { /* no room: refused before anything is made */
+        msg m;
+        int bodies = P.over_kind == 1;
+        P.line = P.over_line;
+        m = fail(&P, PG_ERR_CAPACITY, 1);
+        msg_put(&m, bodies ? "body " : "shape ");
+        msg_u64(&m, P.over_count);
+        msg_put(&m, " of the scene does not fit: the world has ");
+        msg_u64(&m, bodies ? P.room_bodies : P.room_shapes);
+        msg_put(&m, bodies ? " free body slots of max_bodies " : " free shape slots of max_shapes ");
+        msg_u64(&m, bodies ? wd.max_bodies : wd.max_shapes);
+        msg_put(&m, ", the scene needs ");
+        msg_u64(&m, bodies ? P.bodies : P.shapes);
         return P.result;
     }
     parser_init(&P, text, length, error, world);

@@ -20,6 +20,33 @@
 #define SNAPSHOT_MAGIC 0x4E534750u /* "PGSN" */
 #define SNAPSHOT_VERSION 2u /* 2: inverse mass and inertia are derived, not stored */
 
+/* What a world can hold, from the code that writes each value. Restoring refuses a
+ * value beyond these: only corruption makes one, and the step's arithmetic relies on
+ * them (an accumulated force beyond FORCE_LIMIT overflows the next pg_body_apply_force,
+ * a contact friction of -2^31 the solver's rows). Keep them in step with the sources. */
+#define LIMIT_VELOCITY (INT32_C(1) << 29)  /* solver.c VELOCITY_MAX: the solver clamps each velocity
+                                              component (m/s) and the angular velocity (rad/s) to it;
+                                              the setters stay within max_linear_speed <= 4096 m/s and
+                                              1000 rad/s, below it */
+#define LIMIT_FORCE (INT64_C(1) << 60)     /* body.c FORCE_LIMIT: pg_body_apply_force* clamp the
+                                              accumulated force and torque to it */
+#define LIMIT_LAMBDA (INT32_C(1) << 27)    /* solver.c LAMBDA_MAX: accumulated contact impulses */
+#define LIMIT_DAMPING PG_FIX_C(1000)       /* body.c: damping 0..1000 per second */
+#define LIMIT_GRAVITY_SCALE PG_FIX_C(100)  /* body.c: gravity scale -100..100 */
+#define LIMIT_SLEEP_TIME PG_FIX_C(1001)    /* island.c: the timer grows by one step (<= 1 s) while
+                                              it is below 1000 s */
+#define LIMIT_PENETRATION PG_FIX_C(1024)   /* collide.c: two shapes (vertices within 50 m of their
+                                              bodies, radii up to 50 m) overlap by less than the sum
+                                              of their widths and radii, under 400 m. (A separation
+                                              has no upper limit: the speculative window of
+                                              continuous collision grows with the speeds.) */
+#define LIMIT_LOCAL_CENTER PG_FIX_C(51)    /* shape.c: vertices and circle centres lie within 50 m
+                                              of the body, so their centre of mass does (1 m slack) */
+/* A contact normal is a unit vector in Q2.30 (pg_dir_normalize, or a polygon's normal
+ * turned by a rotation): its squared length is within 2^-9 of 1, far beyond rounding. */
+#define UNIT_Q60 (INT64_C(1) << 60)
+#define UNIT_TOLERANCE_Q60 (INT64_C(1) << 51)
+
 static const char *const section_names[PG_SECTION_COUNT] = {"settings", "bodies", "shapes", "contacts", "broadphase", "joints"};
 
 const char *pg_section_name(pg_section s) { return (unsigned)s < PG_SECTION_COUNT ? section_names[s] : "unknown"; }
@@ -28,6 +55,7 @@ uint64_t pg_hash_bytes(uint64_t seed, const void *data, size_t size)
 {
     const uint8_t *p = (const uint8_t *)data;
     size_t i;
+    if (p == NULL) return seed; /* no bytes: the hash of nothing */
     for (i = 0; i < size; ++i) {
         seed ^= p[i];
         seed *= UINT64_C(0x100000001b3);
@@ -212,6 +240,7 @@ static void encode_section(const pg_world *w, pg_section section, sink *s)
 void pg_world_section_hashes(const pg_world *world, uint64_t out[PG_SECTION_COUNT])
 {
     int k;
+    if (out == NULL) return;
     for (k = 0; k < PG_SECTION_COUNT; ++k) {
         sink s;
         s.buf = NULL;
@@ -274,7 +303,8 @@ pg_result pg_world_snapshot_save(const pg_world *world, void *buffer, size_t cap
 {
     sink s;
     if (written != NULL) *written = 0;
-    if (world == NULL || buffer == NULL) return PG_ERR_NULL;
+    if (world == NULL) return PG_ERR_NULL;
+    if (buffer == NULL) return pg__fail(world, PG_ERR_NULL, "pg_world_snapshot_save: buffer is NULL (size it with pg_world_snapshot_size)");
     s.buf = (uint8_t *)buffer;
     s.cap = capacity;
     s.len = 0;
@@ -342,6 +372,21 @@ static void invalid(source *r, size_t at, const char *field)
     }
 }
 
+static int within(int32_t v, int32_t limit) { return v >= -limit && v <= limit; }
+static int within64(int64_t v, int64_t limit) { return v >= -limit && v <= limit; }
+
+/* A contact normal: a unit vector (see UNIT_TOLERANCE_Q60); (0, 0) also when the
+ * contact has no points. */
+static int normal_ok(pg_dir n, int32_t point_count)
+{
+    const int32_t big = (INT32_C(1) << 30) + (INT32_C(1) << 21);
+    int64_t q;
+    if (n.x == 0 && n.y == 0) return point_count == 0;
+    if (!within(n.x, big) || !within(n.y, big)) return 0;
+    q = (int64_t)n.x * n.x + (int64_t)n.y * n.y; /* < 2^61 */
+    return q >= UNIT_Q60 - UNIT_TOLERANCE_Q60 && q <= UNIT_Q60 + UNIT_TOLERANCE_Q60;
+}
+
 /* Parse (and with `w` non-NULL, apply) one snapshot. Applying assumes a validated input. */
 static void decode(source *r, pg_world *w, const pg_world_def *caps)
 {
@@ -404,9 +449,9 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                 b.island = PG_NULL_INDEX;
                 b.gravity_scale = PG_FIX_ONE;
                 if (used) {
-                    at = r->pos;
+                    size_t presence_at = r->pos;
                     m = take_u32(r, "body.presence");
-                    if (m >= (B_MASS << 1)) invalid(r, at, "body.presence");
+                    if (m >= (B_MASS << 1)) invalid(r, presence_at, "body.presence");
                     at = r->pos;
                     b.type = (pg_body_type)take(r, "body.type");
                     if ((unsigned)b.type > (unsigned)PG_BODY_DYNAMIC) invalid(r, at, "body.type");
@@ -421,27 +466,60 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                     b.first_shape = take_u32(r, "body.first_shape");
                     if (b.first_shape != PG_NULL_INDEX && b.first_shape >= caps->max_shapes) invalid(r, at, "body.first_shape");
                     b.shape_count = take_u32(r, "body.shape_count");
-                    if (m & B_VELOCITY) b.v = take_vec(r, "body.velocity");
-                    if (m & B_ANGULAR) b.w = take_i32(r, "body.angular_velocity");
+                    /* every value within what a world can hold (the LIMIT_* above) */
+                    if (m & B_VELOCITY) {
+                        at = r->pos;
+                        b.v = take_vec(r, "body.velocity");
+                        if (!within(b.v.x, LIMIT_VELOCITY) || !within(b.v.y, LIMIT_VELOCITY))
+                            invalid(r, at, "body.velocity (a component beyond 8192 m/s)");
+                        else if (b.type == PG_BODY_STATIC) invalid(r, at, "body.velocity (a static body does not move)");
+                    }
+                    if (m & B_ANGULAR) {
+                        at = r->pos;
+                        b.w = take_i32(r, "body.angular_velocity");
+                        if (!within(b.w, LIMIT_VELOCITY)) invalid(r, at, "body.angular_velocity (beyond 8192 rad/s)");
+                        else if (b.type == PG_BODY_STATIC) invalid(r, at, "body.angular_velocity (a static body does not move)");
+                        else if ((flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) invalid(r, at, "body.angular_velocity (the body has fixed rotation)");
+                    }
                     if (m & B_FORCES) {
+                        at = r->pos;
                         b.force_x = take_i64(r, "body.force");
                         b.force_y = take_i64(r, "body.force");
+                        if (!within64(b.force_x, LIMIT_FORCE) || !within64(b.force_y, LIMIT_FORCE))
+                            invalid(r, at, "body.force (a component beyond 2^60, the accumulator's clamp)");
+                        at = r->pos;
                         b.torque = take_i64(r, "body.torque");
+                        if (!within64(b.torque, LIMIT_FORCE)) invalid(r, at, "body.torque (beyond 2^60, the accumulator's clamp)");
                     }
                     if (m & B_DAMPING) {
+                        at = r->pos;
                         b.linear_damping = take_i32(r, "body.linear_damping");
+                        if (b.linear_damping < 0 || b.linear_damping > LIMIT_DAMPING) invalid(r, at, "body.linear_damping (outside 0..1000)");
+                        at = r->pos;
                         b.angular_damping = take_i32(r, "body.angular_damping");
+                        if (b.angular_damping < 0 || b.angular_damping > LIMIT_DAMPING) invalid(r, at, "body.angular_damping (outside 0..1000)");
                     }
-                    if (m & B_GRAVITY_SCALE) b.gravity_scale = take_i32(r, "body.gravity_scale");
+                    if (m & B_GRAVITY_SCALE) {
+                        at = r->pos;
+                        b.gravity_scale = take_i32(r, "body.gravity_scale");
+                        if (!within(b.gravity_scale, LIMIT_GRAVITY_SCALE)) invalid(r, at, "body.gravity_scale (outside -100..100)");
+                    }
                     if (m & B_USER) b.user_data = take_u64(r, "body.user_data");
-                    if (m & B_SLEEP_TIME) b.sleep_time = take_i32(r, "body.sleep_time");
+                    if (m & B_SLEEP_TIME) {
+                        at = r->pos;
+                        b.sleep_time = take_i32(r, "body.sleep_time");
+                        if (b.sleep_time < 0 || b.sleep_time > LIMIT_SLEEP_TIME) invalid(r, at, "body.sleep_time (outside 0..1001 s)");
+                    }
                     if (m & B_ISLAND) {
                         at = r->pos;
                         b.island = take_u32(r, "body.island");
                         if (b.island >= caps->max_bodies) invalid(r, at, "body.island");
                     }
                     if (m & B_MASS) {
+                        at = r->pos;
                         b.local_center = take_vec(r, "body.local_center");
+                        if (!within(b.local_center.x, LIMIT_LOCAL_CENTER) || !within(b.local_center.y, LIMIT_LOCAL_CENTER))
+                            invalid(r, at, "body.local_center (beyond the 50 m its shapes may reach)");
                         at = r->pos;
                         b.mass = take_i64(r, "body.mass");
                         if (b.mass <= 0) invalid(r, at, "body.mass (a dynamic body's mass is positive)");
@@ -465,7 +543,7 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                         ((m & B_DAMPING) && b.linear_damping == 0 && b.angular_damping == 0) ||
                         ((m & B_GRAVITY_SCALE) && b.gravity_scale == PG_FIX_ONE) || ((m & B_USER) && b.user_data == 0) ||
                         ((m & B_SLEEP_TIME) && b.sleep_time == 0) || ((m & B_ISLAND) && b.island == PG_NULL_INDEX))
-                        invalid(r, at, "body.presence (a present field holds its default)");
+                        invalid(r, presence_at, "body.presence (a present field holds its default)");
                     b.rot = pg_rot_from_angle(b.angle);
                     b.origin = pg_v2_sub(b.center, pg_rot_apply(b.rot, b.local_center));
                 }
@@ -581,6 +659,7 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
             for (i = 0; i < n && r->error_field == NULL; ++i) {
                 pg_contact c;
                 int32_t q;
+                size_t normal_at;
                 unsigned char *p = (unsigned char *)&c;
                 size_t z;
                 for (z = 0; z < sizeof c; ++z) p[z] = 0;
@@ -603,21 +682,39 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                 if (r->shape_owner != NULL && r->error_field == NULL &&
                     (c.body_a != r->shape_owner[c.shape_a] || c.body_b != r->shape_owner[c.shape_b]))
                     invalid(r, at, "contact.bodies (not the shapes' owners)");
+                normal_at = r->pos;
                 c.normal.x = take_i32(r, "contact.normal");
                 c.normal.y = take_i32(r, "contact.normal");
+                /* a mix of two shapes' materials (contact.c): friction sqrt(fa fb) <= 10,
+                 * restitution max(ra, rb) <= 1 */
+                at = r->pos;
                 c.friction = take_i32(r, "contact.friction");
+                if (c.friction < 0 || c.friction > PG_ENV_MAX_FRICTION) invalid(r, at, "contact.friction (outside 0..10)");
+                at = r->pos;
                 c.restitution = take_i32(r, "contact.restitution");
+                if (c.restitution < 0 || c.restitution > PG_FIX_ONE) invalid(r, at, "contact.restitution (outside 0..1)");
                 at = r->pos;
                 c.point_count = (int32_t)take(r, "contact.point_count");
                 if (c.point_count > 2) invalid(r, at, "contact.point_count");
+                else if (r->error_field == NULL && !normal_ok(c.normal, c.point_count)) invalid(r, normal_at, "contact.normal (not a unit vector)");
                 for (q = 0; q < c.point_count && r->error_field == NULL; ++q) {
                     pg_contact_point *cp = &c.points[q];
                     cp->point = take_vec(r, "contact.point");
+                    at = r->pos;
                     cp->separation = take_i32(r, "contact.separation");
+                    if (cp->separation < -LIMIT_PENETRATION) invalid(r, at, "contact.separation (deeper than two shapes can overlap)");
                     cp->id = take_u32(r, "contact.id");
+                    /* the solver keeps the accumulated impulses within its LAMBDA_MAX */
+                    at = r->pos;
                     cp->normal_impulse = take_i32(r, "contact.normal_impulse");
+                    if (cp->normal_impulse < 0 || cp->normal_impulse > LIMIT_LAMBDA) invalid(r, at, "contact.normal_impulse (outside 0..2^27)");
+                    at = r->pos;
                     cp->tangent_impulse = take_i32(r, "contact.tangent_impulse");
+                    if (!within(cp->tangent_impulse, LIMIT_LAMBDA)) invalid(r, at, "contact.tangent_impulse (beyond +-2^27)");
+                    at = r->pos;
                     cp->max_normal_impulse = take_i32(r, "contact.max_normal_impulse");
+                    if (cp->max_normal_impulse < 0 || cp->max_normal_impulse > LIMIT_LAMBDA)
+                        invalid(r, at, "contact.max_normal_impulse (outside 0..2^27)");
                 }
                 if (w != NULL) w->contacts[i] = c;
             }
@@ -645,7 +742,8 @@ pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_
 {
     source r;
     uint32_t i, bodies = 0;
-    if (world == NULL || snapshot == NULL) return PG_ERR_NULL;
+    if (world == NULL) return PG_ERR_NULL;
+    if (snapshot == NULL) return pg__fail(world, PG_ERR_NULL, "pg_world_snapshot_restore: snapshot is NULL");
     r.p = (const uint8_t *)snapshot;
     r.size = size;
     r.pos = 0;
@@ -660,7 +758,7 @@ pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_
     r.shape_mark = world->proxy_flags_compact;
     decode(&r, NULL, &world->def); /* validate everything first */
     if (r.error_field != NULL) {
-        char detail[96], num[24];
+        char detail[134], num[24]; /* what last_error holds after "PG_ERR_INVALID_ARGUMENT: " */
         size_t pos = 0, k = 0, off = r.error_offset;
         const char *t = "corrupt snapshot at offset ";
         do { num[k++] = (char)('0' + (int)(off % 10u)); off /= 10u; } while (off != 0 && k < sizeof num);

@@ -140,20 +140,32 @@ typedef enum pg_section {
 const char *pg_section_name(pg_section s);
 /* 64-bit hash of the canonical encoding of the whole state (all sections). */
 uint64_t pg_world_hash(const pg_world *world);
+/* The hash of each section, in out[section]. A NULL out writes nothing. */
 void pg_world_section_hashes(const pg_world *world, uint64_t out[PG_SECTION_COUNT]);
 
-/* The hash function itself (FNV-1a 64 over bytes), for files and tools. */
+/* The hash function itself (FNV-1a 64 over bytes), for files and tools. A NULL data
+ * hashes no bytes, whatever `size` says: the result is `seed`. */
 uint64_t pg_hash_bytes(uint64_t seed, const void *data, size_t size);
 #define PG_HASH_SEED UINT64_C(0xcbf29ce484222325)
 
 /* ---- snapshots ------------------------------------------------------------------------- */
 /* Bytes a snapshot of this world needs now (it grows with bodies, shapes, contacts). */
 size_t pg_world_snapshot_size(const pg_world *world);
-/* Write the snapshot; *written receives its size. PG_ERR_MEMORY if `capacity` is short. */
+/* Write the snapshot; *written receives its size. PG_ERR_MEMORY if `capacity` is short;
+ * PG_ERR_NULL for a NULL world or buffer (with a message in pg_world_last_error() when
+ * the world is given). */
 pg_result pg_world_snapshot_save(const pg_world *world, void *buffer, size_t capacity, size_t *written);
 /* Restore into `world` (created with the same capacities as the saved world).
  * The snapshot is validated first: a corrupt one changes nothing and returns
- * PG_ERR_INVALID_ARGUMENT with the offset and field in pg_world_last_error(). */
+ * PG_ERR_INVALID_ARGUMENT with the offset and field in pg_world_last_error(). Corrupt
+ * means anything no world can hold: broken links between bodies, shapes and contacts,
+ * shapes or mass data pg_shape_create would refuse, and values beyond what the setters
+ * and the step ever write (velocities beyond 8192 m/s or rad/s per component, forces and
+ * torques beyond the accumulators' 2^60, damping, gravity scale or sleep timers outside
+ * their ranges, contact materials outside the shapes', normals that are not unit
+ * vectors, overlaps deeper than 1024 m, impulses beyond the solver's 2^27). Positions
+ * are not limited: a body may have flown out of the envelope. PG_ERR_NULL for a NULL
+ * world or snapshot. */
 pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_t size);
 
 /* Where two states first differ: the section, and the index of the first body, shape or

@@ -75,8 +75,9 @@ typedef struct pg_scene_error {
 } pg_scene_error;
 
 /* Read only the world settings from scene text, so the caller can size memory.
- * The whole text is checked (syntax, ranges, shapes, counts), so a text accepted here
- * fails in pg_scene_load only for reasons that need a world (its capacities, a
+ * The whole text is checked (syntax, ranges, shapes, counts, and each dynamic body's
+ * mass and inertia as pg_shape_create checks them, shape by shape), so a text accepted
+ * here fails in pg_scene_load only for reasons that need a world (its free capacity, a
  * different def). *def starts from pg_default_world_def() with the file's settings on
  * top; capacities the file does not give are what the scene needs: max_bodies = its
  * bodies, max_shapes = its shapes (at least 1 each), max_contacts = 4 * shapes + 64.
@@ -87,13 +88,16 @@ pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, 
 /* Create the scene's bodies in `world`, in file order (each takes the lowest free body
  * slot). The world must have been created from the def pg_scene_read_def gives for
  * this text: every setting except the capacities must be equal (else
- * PG_ERR_INVALID_ARGUMENT naming the setting, before anything is created), and the
- * capacities must hold the scene's bodies and shapes besides any already in the world.
- * The whole text is checked before the first body is made. If making a body still
- * fails (PG_ERR_CAPACITY, or a value the world refuses), the error names that body's
- * line and holds the world's detail (pg_world_last_error), and the world keeps the
- * bodies completed before that line (a partly built body is destroyed): recreate the
- * world to start again. */
+ * PG_ERR_INVALID_ARGUMENT naming the setting), and the world's free body and shape
+ * slots must hold the scene's bodies and shapes besides any already in the world (else
+ * PG_ERR_CAPACITY naming the line of the first body or shape that does not fit).
+ * Everything is checked before the first body is made: the whole text as
+ * pg_scene_read_def checks it, the settings and the free slots, so a failing load
+ * leaves the world as it was. (Should making a body fail all the same, which would be
+ * a check of pg_body_create or pg_shape_create that this reader does not repeat, the
+ * error names that body's line and holds the world's detail (pg_world_last_error),
+ * and the world keeps the bodies completed before that line; a partly built body is
+ * destroyed.) */
 pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_scene_error *error);
 
 /* Write the world's settings (the def in force, capacities included) and every body

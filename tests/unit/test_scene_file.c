@@ -542,6 +542,18 @@ static void test_malformed_inputs(void **state)
         {"pogon-scene 1\nmax_linear_speed 10\nball 1 linear_velocity 8 8\n", PG_ERR_ENVELOPE, 3, 24, "above max_linear_speed 10"},
         {"pogon-scene 1\nball 60\n", PG_ERR_ENVELOPE, 2, 6, "the ball is outside the envelope"},
         {"pogon-scene 1\nbox 0 1\n", PG_ERR_DEGENERATE, 2, 5, "the box is degenerate"},
+        /* mass data a dynamic body cannot have (pg__mass_data_problem), checked as loading
+         * will: for a ready-made body, and for each shape of a body block in turn */
+        {"pogon-scene 1\nbox 100 100 density 100\n", PG_ERR_ENVELOPE, 2, 5,
+         "line 2, column 5: cannot make the box: the body's inertia would exceed 1.3e8 kg m^2"},
+        {"pogon-scene 1\nbody dynamic\n  shape box 100 100 density 100\nend\n", PG_ERR_ENVELOPE, 3, 9,
+         "cannot add the box to the body of line 2: the body's inertia would exceed 1.3e8 kg m^2"},
+        {"pogon-scene 1\nbody dynamic\n  shape box 50 50 offset -25 0 density 100\n  shape box 50 50 offset 25 0 density 100\nend\n",
+         PG_ERR_ENVELOPE, 4, 9, "cannot add the box to the body of line 2: the body's inertia would exceed"},
+        {"pogon-scene 1\ntriangle 0.025 density 0.1\n", PG_ERR_ENVELOPE, 2, 10,
+         "cannot make the triangle: the body's inertia would be below 3.0e-8 kg m^2"},
+        {"pogon-scene 1\nbody dynamic\n  shape polygon 0 0 0.012 0 0.006 0.0104 density 100\n  shape circle 1 offset 5 0\nend\n",
+         PG_ERR_ENVELOPE, 3, 9, "cannot add the polygon to the body of line 2: the body would be too compact"},
         /* polygons */
         {"pogon-scene 1\nbody dynamic\n  shape polygon 0 0 1 0\nend\n", PG_ERR_INVALID_ARGUMENT, 3, 9,
          "a polygon needs 3 to 8 vertices (x y pairs), got 2"},
@@ -574,6 +586,32 @@ static void test_malformed_inputs(void **state)
     /* a NUL byte is not text either, and the length, not the NUL, ends the text */
     expect_error("pogon-scene 1\nball 1\0 2\n", 22, PG_ERR_INVALID_ARGUMENT, 2, 7, "unexpected byte 0x00");
     expect_error("pogon-scene 1\nball 1 position 2 3\n", 31, PG_ERR_INVALID_ARGUMENT, 2, 18, "(y), got end of line");
+}
+
+/* Mass checks that depend on the body: a body with fixed rotation has no inverse
+ * inertia, so a tiny or compact one is fine; static and kinematic bodies have no mass.
+ * Whatever pg_scene_read_def accepts, pg_scene_load makes. */
+static void test_mass_checked_like_the_world(void **state)
+{
+    static const char *const fine[] = {
+        "pogon-scene 1\ntriangle 0.025 density 0.1 fixed_rotation 1\n",
+        "pogon-scene 1\nbody dynamic\n  fixed_rotation 1\n  shape polygon 0 0 0.012 0 0.006 0.0104 density 100\nend\n",
+        "pogon-scene 1\nbox 100 100 density 100 type kinematic\n",
+        "pogon-scene 1\nbody static\n  shape box 100 100 density 100\nend\n",
+        "pogon-scene 1\nbox 50 50 density 100\n",
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof fine / sizeof fine[0]; ++i) {
+        pg_world_def def;
+        pg_scene_error err;
+        loaded l;
+        if (pg_scene_read_def(fine[i], strlen(fine[i]), &def, &err) != PG_OK) fail_msg("%s: %s", fine[i], err.message);
+        l = world_for_def(&def);
+        if (pg_scene_load(l.w, fine[i], strlen(fine[i]), &err) != PG_OK) fail_msg("%s: load: %s", fine[i], err.message);
+        assert_int_equal(pg_world_get_stats(l.w).body_count, 1);
+        free_loaded(&l);
+    }
 }
 
 static void test_null_arguments(void **state)
@@ -624,18 +662,23 @@ static void test_load_needs_matching_world(void **state)
     assert_int_equal(err.line, 1);
     assert_non_null(strstr(err.message, "substeps differs from the default the scene uses"));
     free_loaded(&l);
-    /* too small a world: the bodies before the failing line stay */
+    /* too small a world: refused before anything is made, naming the first body that
+     * does not fit */
     assert_int_equal(pg_scene_read_def(text, strlen(text), &def, &err), PG_OK);
     assert_int_equal(def.max_bodies, 3);
     def.max_bodies = 2;
     l = world_for_def(&def);
-    assert_int_equal(pg_scene_load(l.w, text, strlen(text), &err), PG_ERR_CAPACITY);
-    assert_int_equal(err.line, 5);
-    assert_int_equal(err.column, 1);
-    assert_non_null(strstr(err.message, "line 5, column 1: cannot make the body: PG_ERR_CAPACITY"));
-    assert_int_equal(pg_world_get_stats(l.w).body_count, 2);
+    {
+        uint64_t h = pg_world_hash(l.w);
+        assert_int_equal(pg_scene_load(l.w, text, strlen(text), &err), PG_ERR_CAPACITY);
+        assert_int_equal(err.line, 5);
+        assert_int_equal(err.column, 1);
+        assert_string_equal(err.message, "line 5, column 1: body 3 of the scene does not fit: the world has 2 free body slots of max_bodies 2, the scene needs 3");
+        assert_int_equal(pg_world_get_stats(l.w).body_count, 0);
+        assert_true(pg_world_hash(l.w) == h);
+    }
     free_loaded(&l);
-    /* a body block that does not fit is not left half built */
+    /* a body block that does not fit is not begun */
     {
         const char *two = "pogon-scene 1\nmax_shapes 2\nbody dynamic\n  shape circle 1\n  shape circle 1 offset 1 0\nend\n";
         assert_int_equal(pg_scene_read_def(two, strlen(two), &def, &err), PG_OK);
@@ -643,8 +686,41 @@ static void test_load_needs_matching_world(void **state)
         l = world_for_def(&def);
         assert_int_equal(pg_scene_load(l.w, two, strlen(two), &err), PG_ERR_CAPACITY);
         assert_int_equal(err.line, 5);
+        assert_non_null(strstr(err.message, "shape 2 of the scene does not fit: the world has 1 free shape slots of max_shapes 1"));
         assert_int_equal(pg_world_get_stats(l.w).body_count, 0);
         assert_int_equal(pg_world_get_stats(l.w).shape_count, 0);
+        free_loaded(&l);
+    }
+    /* loading into a world that already holds bodies: the free slots count, and a load
+     * that does not fit leaves the earlier loads as they were */
+    {
+        const char *three = "pogon-scene 1\nball 1\nstar 1 position 3 0\nbox 1 1 position 6 0\n";
+        uint64_t h;
+        assert_int_equal(pg_scene_read_def(three, strlen(three), &def, &err), PG_OK);
+        def.max_bodies = 8;
+        def.max_shapes = 16;
+        l = world_for_def(&def);
+        assert_int_equal(pg_scene_load(l.w, three, strlen(three), &err), PG_OK);
+        assert_int_equal(pg_scene_load(l.w, three, strlen(three), &err), PG_OK);
+        h = pg_world_hash(l.w);
+        assert_int_equal(pg_scene_load(l.w, three, strlen(three), &err), PG_ERR_CAPACITY); /* body 3 of 3 */
+        assert_int_equal(err.line, 4);
+        assert_non_null(strstr(err.message, "body 3 of the scene does not fit: the world has 2 free body slots of max_bodies 8"));
+        assert_int_equal(pg_world_get_stats(l.w).body_count, 6);
+        assert_true(pg_world_hash(l.w) == h);
+        free_loaded(&l);
+        def.max_bodies = 9;
+        def.max_shapes = 10;
+        l = world_for_def(&def);
+        assert_int_equal(pg_scene_load(l.w, three, strlen(three), &err), PG_OK);
+        assert_int_equal(pg_scene_load(l.w, three, strlen(three), &err), PG_OK);
+        h = pg_world_hash(l.w);
+        assert_int_equal(pg_scene_load(l.w, three, strlen(three), &err), PG_ERR_CAPACITY); /* the star's second shape */
+        assert_int_equal(err.line, 3);
+        assert_non_null(strstr(err.message, "shape 3 of the scene does not fit: the world has 2 free shape slots of max_shapes 10"));
+        assert_int_equal(pg_world_get_stats(l.w).body_count, 6);
+        assert_int_equal(pg_world_get_stats(l.w).shape_count, 8);
+        assert_true(pg_world_hash(l.w) == h);
         free_loaded(&l);
     }
 }
@@ -772,6 +848,7 @@ int main(void)
         cmocka_unit_test(test_crlf_and_comments),
         cmocka_unit_test(test_write_truncates_like_snprintf),
         cmocka_unit_test(test_malformed_inputs),
+        cmocka_unit_test(test_mass_checked_like_the_world),
         cmocka_unit_test(test_null_arguments),
         cmocka_unit_test(test_load_needs_matching_world),
         cmocka_unit_test(test_every_prefix_is_handled),

@@ -385,6 +385,7 @@ static void test_truncated_and_framing(void **state)
     }
     assert_int_equal(pg_world_snapshot_restore(NULL, s.bytes, s.size), PG_ERR_NULL);
     assert_int_equal(pg_world_snapshot_restore(dst.t.w, NULL, s.size), PG_ERR_NULL);
+    assert_string_equal(pg_world_last_error(dst.t.w), "PG_ERR_NULL: pg_world_snapshot_restore: snapshot is NULL");
     assert_true(pg_world_hash(dst.t.w) == h);
     /* the intact snapshot still restores */
     assert_int_equal(pg_world_snapshot_restore(dst.t.w, s.bytes, s.size), PG_OK);
@@ -410,6 +411,7 @@ static void test_save_errors(void **state)
     assert_int_equal(pg_world_snapshot_save(m.t.w, buf, 0, &written), PG_ERR_MEMORY);
     assert_int_equal(pg_world_snapshot_save(NULL, buf, need, &written), PG_ERR_NULL);
     assert_int_equal(pg_world_snapshot_save(m.t.w, NULL, need, &written), PG_ERR_NULL);
+    assert_non_null(strstr(pg_world_last_error(m.t.w), "PG_ERR_NULL: pg_world_snapshot_save: buffer is NULL"));
     assert_int_equal(pg_world_snapshot_save(m.t.w, buf, need, NULL), PG_OK);
     PG_EXPECT_EQ(buf[need], 0xAB, "%s", "no byte past the snapshot");
     assert_int_equal(pg_world_snapshot_save(m.t.w, buf, need + 8u, &written), PG_OK);
@@ -594,6 +596,46 @@ static layout find_layout(const snapshot *s)
     return l;
 }
 
+/* Where body record b's optional field `bit` (a presence bit) is, or would be inserted:
+ * after the fixed part (31 bytes) and the present fields of lower bits. */
+static size_t body_field_at(const snapshot *s, const layout *l, uint32_t b, uint32_t bit)
+{
+    static const size_t sizes[9] = {8, 4, 24, 8, 4, 8, 4, 4, 24}; /* velocity .. mass data */
+    uint32_t m = get32(s->bytes + l->body[b] + 5), k;
+    size_t at = l->body[b] + 31;
+    assert_true(s->bytes[l->body[b] + 4] == 1); /* a used body */
+    for (k = 0; (1u << k) < bit; ++k)
+        if (m & (1u << k)) at += sizes[k];
+    return at;
+}
+
+/* A copy of s in `out` (room for s->size + 24) with body b's optional field `bit` holding
+ * the n bytes `value`: written over it when present, else inserted, with the presence
+ * bit and the section length patched. Returns the copy's size. */
+static size_t with_body_field(const snapshot *s, const layout *l, uint32_t b, uint32_t bit, const uint8_t *value, size_t n, uint8_t *out)
+{
+    size_t at = body_field_at(s, l, b, bit), start[PG_SECTION_COUNT], length[PG_SECTION_COUNT];
+    uint32_t m = get32(s->bytes + l->body[b] + 5);
+    section_ranges(s, start, length);
+    if (m & bit) {
+        memcpy(out, s->bytes, s->size);
+        memcpy(out + at, value, n);
+        return s->size;
+    }
+    memcpy(out, s->bytes, at);
+    memcpy(out + at, value, n);
+    memcpy(out + at + n, s->bytes + at, s->size - at);
+    put32(out + l->body[b] + 5, m | bit);
+    put32(out + start[PG_SECTION_BODIES] - 4, (uint32_t)(length[PG_SECTION_BODIES] + n));
+    return s->size + n;
+}
+
+static void le64(uint8_t *p, uint64_t v)
+{
+    put32(p, (uint32_t)(v & 0xFFFFFFFFu));
+    put32(p + 4, (uint32_t)(v >> 32));
+}
+
 typedef struct corruption_run {
     test_world target;
     uint64_t hash;
@@ -609,9 +651,9 @@ static uint8_t *fresh_copy(corruption_run *r)
     return r->copy;
 }
 
-static void expect_corruption_refused(corruption_run *r, const char *what)
+static void expect_bytes_refused(corruption_run *r, const uint8_t *bytes, size_t size, const char *what)
 {
-    pg_result res = pg_world_snapshot_restore(r->target.w, r->copy, r->good->size);
+    pg_result res = pg_world_snapshot_restore(r->target.w, bytes, size);
     if (res == PG_OK) {
         print_error("accepted: %s\n", what);
         r->accepted += 1;
@@ -620,7 +662,17 @@ static void expect_corruption_refused(corruption_run *r, const char *what)
         return;
     }
     PG_EXPECT_EQ(res, PG_ERR_INVALID_ARGUMENT, "%s", what);
-    if (strstr(pg_world_last_error(r->target.w), "offset") == NULL) fail_msg("%s: last error \"%s\"", what, pg_world_last_error(r->target.w));
+    if (strstr(pg_world_last_error(r->target.w), "offset") == NULL || strstr(pg_world_last_error(r->target.w), "field") == NULL)
+        fail_msg("%s: last error \"%s\"", what, pg_world_last_error(r->target.w));
+}
+
+static void expect_corruption_refused(corruption_run *r, const char *what) { expect_bytes_refused(r, r->copy, r->good->size, what); }
+
+/* A state a world can reach: restored (then the target is put back). */
+static void expect_bytes_accepted(corruption_run *r, const uint8_t *bytes, size_t size, const char *what)
+{
+    if (pg_world_snapshot_restore(r->target.w, bytes, size) != PG_OK) fail_msg("refused: %s: %s", what, pg_world_last_error(r->target.w));
+    assert_int_equal(pg_world_snapshot_restore(r->target.w, r->target_original.bytes, r->target_original.size), PG_OK);
 }
 
 static void test_inconsistent_snapshots_refused(void **state)
@@ -757,6 +809,147 @@ static void test_inconsistent_snapshots_refused(void **state)
         }
         expect_corruption_refused(&r, "a box with two vertices swapped (not convex counter-clockwise)");
     }
+
+    /* values no world holds. The setters and the step bound every one (the limits in
+     * src/state.c): a velocity component within the solver's 2^29 (8192 m/s), forces
+     * within the accumulators' 2^60 (body.c), damping 0..1000, gravity scale -100..100,
+     * a sleep timer 0..1001 s, contact materials a mix of the shapes' (friction 0..10,
+     * restitution 0..1), unit normals and impulses within the solver's 2^27. Outside,
+     * the next call or step overflows (pg_body_apply_force on a force of INT64_MAX, the
+     * solver on a friction of -2^31) or divides by zero (damping -N). What the world can
+     * reach is accepted: the bounds themselves, and a body flown out to the edge of
+     * Q16.16. */
+    {
+        uint8_t *big = (uint8_t *)t_malloc(s.size + 24u), v[24];
+        const uint32_t vel = 1u, ang = 2u, forces = 4u, damping = 8u, gscale = 16u, sleep = 64u;
+        const uint32_t ground = src.ground.index, ball = src.ball.index, box = src.box.index, star = src.star.index;
+        size_t n, c0 = l.contact[0];
+        assert_non_null(big);
+        memset(v, 0, sizeof v);
+        /* velocities */
+        put32(v, 0x80000000u); put32(v + 4, 0x80000000u);
+        n = with_body_field(&s, &l, ball, vel, v, 8, big);
+        expect_bytes_refused(&r, big, n, "body.velocity (INT32_MIN, INT32_MIN)");
+        put32(v, (1u << 29) + 1u); put32(v + 4, 0);
+        n = with_body_field(&s, &l, ball, vel, v, 8, big);
+        expect_bytes_refused(&r, big, n, "body.velocity x 2^29 + 1 (beyond the solver's clamp)");
+        put32(v, 1u << 29); put32(v + 4, (uint32_t)-(INT32_C(1) << 29));
+        n = with_body_field(&s, &l, ball, vel, v, 8, big);
+        expect_bytes_accepted(&r, big, n, "body.velocity (2^29, -2^29): the solver's clamp");
+        put32(v, (uint32_t)PG_FIX_ONE); put32(v + 4, 0);
+        n = with_body_field(&s, &l, ground, vel, v, 8, big);
+        expect_bytes_refused(&r, big, n, "a static body with a velocity");
+        put32(v, 0x7FFFFFFFu);
+        n = with_body_field(&s, &l, ball, ang, v, 4, big);
+        expect_bytes_refused(&r, big, n, "body.angular_velocity 32768 rad/s");
+        put32(v, (uint32_t)-(INT32_C(1) << 29) - 1u);
+        n = with_body_field(&s, &l, ball, ang, v, 4, big);
+        expect_bytes_refused(&r, big, n, "body.angular_velocity -2^29 - 1");
+        put32(v, 1u << 29);
+        n = with_body_field(&s, &l, ball, ang, v, 4, big);
+        expect_bytes_accepted(&r, big, n, "body.angular_velocity 2^29 (8192 rad/s): the solver's clamp");
+        put32(v, (uint32_t)PG_FIX_ONE);
+        n = with_body_field(&s, &l, ground, ang, v, 4, big);
+        expect_bytes_refused(&r, big, n, "a static body with an angular velocity");
+        n = with_body_field(&s, &l, star, ang, v, 4, big);
+        expect_bytes_refused(&r, big, n, "a body with fixed rotation turning");
+        /* pending forces: force x, force y, torque, int64 each */
+        memset(v, 0, sizeof v);
+        le64(v, (uint64_t)INT64_MAX);
+        n = with_body_field(&s, &l, box, forces, v, 24, big);
+        expect_bytes_refused(&r, big, n, "body.force x INT64_MAX");
+        le64(v, (UINT64_C(1) << 62) | 0x1234u); /* a bit flip in the top byte of a small force */
+        n = with_body_field(&s, &l, box, forces, v, 24, big);
+        expect_bytes_refused(&r, big, n, "body.force x 2^62 + 0x1234");
+        le64(v, 0);
+        le64(v + 8, (uint64_t)-(INT64_C(1) << 60) - 1u);
+        n = with_body_field(&s, &l, box, forces, v, 24, big);
+        expect_bytes_refused(&r, big, n, "body.force y -2^60 - 1");
+        le64(v + 8, 0);
+        le64(v + 16, (UINT64_C(1) << 60) + 1u);
+        n = with_body_field(&s, &l, box, forces, v, 24, big);
+        expect_bytes_refused(&r, big, n, "body.torque 2^60 + 1");
+        le64(v, UINT64_C(1) << 60);
+        le64(v + 8, (uint64_t)-(INT64_C(1) << 60));
+        le64(v + 16, UINT64_C(1) << 60);
+        n = with_body_field(&s, &l, box, forces, v, 24, big);
+        expect_bytes_accepted(&r, big, n, "forces and torque at the accumulators' clamp 2^60");
+        /* damping (linear, angular), gravity scale, sleep timer */
+        memset(v, 0, sizeof v);
+        put32(v, (uint32_t)-1);
+        n = with_body_field(&s, &l, box, damping, v, 8, big);
+        expect_bytes_refused(&r, big, n, "body.linear_damping negative");
+        put32(v, 0); put32(v + 4, (uint32_t)PG_FIX_C(1001));
+        n = with_body_field(&s, &l, box, damping, v, 8, big);
+        expect_bytes_refused(&r, big, n, "body.angular_damping 1001");
+        put32(v, (uint32_t)PG_FIX_C(101));
+        n = with_body_field(&s, &l, box, gscale, v, 4, big);
+        expect_bytes_refused(&r, big, n, "body.gravity_scale 101");
+        put32(v, (uint32_t)-1);
+        n = with_body_field(&s, &l, box, sleep, v, 4, big);
+        expect_bytes_refused(&r, big, n, "body.sleep_time negative");
+        put32(v, (uint32_t)PG_FIX_C(2000));
+        n = with_body_field(&s, &l, box, sleep, v, 4, big);
+        expect_bytes_refused(&r, big, n, "body.sleep_time 2000 s");
+        put32(v, (uint32_t)PG_FIX_C(1000));
+        n = with_body_field(&s, &l, box, sleep, v, 4, big);
+        expect_bytes_accepted(&r, big, n, "body.sleep_time 1000 s");
+        /* the centre of mass, in the body's frame: the first 8 of the last 24 bytes */
+        put32(fresh_copy(&r) + l.body[box + 1] - 24, (uint32_t)PG_FIX_C(60));
+        expect_corruption_refused(&r, "body.local_center 60 m from the body (its shapes reach 50 m)");
+        /* positions are not limited: a body may fly out of the envelope to the edge */
+        put32(fresh_copy(&r) + l.body[ball] + 11, (uint32_t)PG_FIX_C(30000));
+        expect_bytes_accepted(&r, r.copy, s.size, "a body at 30000 m");
+        put32(fresh_copy(&r) + l.body[ball] + 11, 0x80000000u);
+        put32(r.copy + l.body[ball] + 15, 0x7FFFFFFFu);
+        expect_bytes_accepted(&r, r.copy, s.size, "a body at the edge of Q16.16");
+        /* contact 0: normal +16, friction +24, restitution +28, point count +32, then its
+         * first point: separation +41, normal impulse +49, tangent impulse +53, max normal
+         * impulse +57. Two shapes overlap by 400 m at most; a speculative gap has no limit
+         * (continuous collision widens the window with the speeds). */
+        assert_true(s.bytes[c0 + 32] >= 1);
+        put32(fresh_copy(&r) + c0 + 41, 0x80000000u);
+        expect_corruption_refused(&r, "contact.separation INT32_MIN");
+        put32(fresh_copy(&r) + c0 + 41, (uint32_t)-PG_FIX_C(1024) - 1u);
+        expect_corruption_refused(&r, "contact.separation deeper than 1024 m");
+        put32(fresh_copy(&r) + c0 + 41, (uint32_t)-PG_FIX_C(1000));
+        expect_bytes_accepted(&r, r.copy, s.size, "contact.separation -1000 m");
+        put32(fresh_copy(&r) + c0 + 41, 0x7FFFFFFFu);
+        expect_bytes_accepted(&r, r.copy, s.size, "contact.separation PG_FIX_MAX (a wide speculative window)");
+        put32(fresh_copy(&r) + c0 + 24, 0x80000000u);
+        expect_corruption_refused(&r, "contact.friction -2^31");
+        put32(fresh_copy(&r) + c0 + 24, (uint32_t)PG_FIX_C(10) + 1u);
+        expect_corruption_refused(&r, "contact.friction above 10");
+        put32(fresh_copy(&r) + c0 + 28, (uint32_t)PG_FIX_C(2));
+        expect_corruption_refused(&r, "contact.restitution 2");
+        put32(fresh_copy(&r) + c0 + 28, (uint32_t)-1);
+        expect_corruption_refused(&r, "contact.restitution negative");
+        put32(fresh_copy(&r) + c0 + 16, 0);
+        put32(r.copy + c0 + 20, 0);
+        expect_corruption_refused(&r, "contact.normal (0, 0) with points");
+        put32(fresh_copy(&r) + c0 + 16, 1u << 30);
+        put32(r.copy + c0 + 20, 1u << 30);
+        expect_corruption_refused(&r, "contact.normal of length sqrt 2");
+        put32(fresh_copy(&r) + c0 + 16, 0x80000000u);
+        put32(r.copy + c0 + 20, 0);
+        expect_corruption_refused(&r, "contact.normal (-2^31, 0)");
+        put32(fresh_copy(&r) + c0 + 16, 0);
+        put32(r.copy + c0 + 20, (uint32_t)-(INT32_C(1) << 30));
+        expect_bytes_accepted(&r, r.copy, s.size, "contact.normal (0, -1)");
+        put32(fresh_copy(&r) + c0 + 49, (uint32_t)-1);
+        expect_corruption_refused(&r, "contact.normal_impulse negative");
+        put32(fresh_copy(&r) + c0 + 49, (1u << 27) + 1u);
+        expect_corruption_refused(&r, "contact.normal_impulse 2^27 + 1");
+        put32(fresh_copy(&r) + c0 + 53, 0x80000000u);
+        expect_corruption_refused(&r, "contact.tangent_impulse INT32_MIN");
+        put32(fresh_copy(&r) + c0 + 57, 0x7FFFFFFFu);
+        expect_corruption_refused(&r, "contact.max_normal_impulse INT32_MAX");
+        put32(fresh_copy(&r) + c0 + 49, 1u << 27);
+        put32(r.copy + c0 + 53, (uint32_t)-(INT32_C(1) << 27));
+        put32(r.copy + c0 + 57, 1u << 27);
+        expect_bytes_accepted(&r, r.copy, s.size, "contact impulses at the solver's bound 2^27");
+        t_free(big);
+    }
     if (pg_world_hash(r.target.w) != r.hash) fail_msg("%s", "the target world changed");
     if (r.accepted > 0) fail_msg("%d inconsistent snapshots were accepted (listed above)", r.accepted);
     t_free(r.copy);
@@ -824,6 +1017,10 @@ static void test_hashes_are_of_the_snapshot_encoding(void **state)
     assert_true(pg_hash_bytes(PG_HASH_SEED, "", 0) == UINT64_C(0xcbf29ce484222325));
     assert_true(pg_hash_bytes(PG_HASH_SEED, "a", 1) == UINT64_C(0xaf63dc4c8601ec8c));
     assert_true(pg_hash_bytes(PG_HASH_SEED, "foobar", 6) == UINT64_C(0x85944171f73967e8));
+    /* NULL data hashes no bytes whatever the size; a NULL out receives nothing (replay.h) */
+    assert_true(pg_hash_bytes(PG_HASH_SEED, NULL, 0) == PG_HASH_SEED);
+    assert_true(pg_hash_bytes(UINT64_C(12345), NULL, 16) == UINT64_C(12345));
+    pg_world_section_hashes(m.t.w, NULL);
     for (k = 0; k < PG_SECTION_COUNT; ++k) {
         assert_non_null(pg_section_name((pg_section)k));
         for (j = 0; j < k; ++j) assert_string_not_equal(pg_section_name((pg_section)k), pg_section_name((pg_section)j));
