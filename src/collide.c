@@ -44,9 +44,12 @@
  *          a circle's centre). Circle-circle is 0x20000.
  *   For a polygon against a circle the circle's byte is 0.
  *
- * PRECISION AND BOUNDS (see geom.c): coordinates |x|, |y| <= 2^29 raw, radii and the
- * speculative distance <= 2^28 raw. Dot products with Q2.30 normals are kept as int64
- * Q46 sums (< 2^61) and rounded once. Separations against a face are measured from the
+ * PRECISION AND BOUNDS (see geom.c): coordinates |x|, |y| <= 2^29 raw, radii <= 2^28 raw
+ * (the envelope's 50 m is 2^21.6), the speculative distance any pg_fix >= 0: contact.c
+ * widens it to the distance a pair can close in one step, which reaches 11 585 m
+ * (2^29.5 raw) at step_hz 1 and 4096 m/s, and the one product it enters,
+ * (speculative + radii) 2^31, stays below 2^63. Dot products with Q2.30 normals are kept
+ * as int64 Q46 sums (< 2^61) and rounded once. Separations against a face are measured from the
  * face's mean offset (v1.n + v2.n) / 2, not from one of its vertices, so reversing a
  * face (as mirroring does) gives the same bits; so are distances to a segment's interior
  * in the closest-feature test. Every formula is symmetric in the two ends of an edge and

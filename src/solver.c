@@ -174,8 +174,6 @@ static pg_fix k_ratio(denominator t, denominator n)
 
 /* (r x d) for a Q16 vector and a Q30 direction, rounded to Q16. */
 static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return (pg_fix)pg__round_shift64((int64_t)r.x * d.y - (int64_t)r.y * d.x, 30); }
-/* d . v for a Q30 direction and a Q16 vector, rounded to Q16. */
-static pg_fix dot_dv(pg_dir d, pg_vec2 v) { return (pg_fix)pg__round_shift64((int64_t)d.x * v.x + (int64_t)d.y * v.y, 30); }
 
 /* round(a c / 2^16) for a wide a and a Q16.16 c: one int64 product when it cannot
  * overflow (|a| < 2^41, |c| < 2^21: ordinary bodies), the 128-bit path otherwise. */
@@ -290,17 +288,23 @@ typedef struct step_context {
 /* ---- the row kernel ------------------------------------------------------------------
  * A constraint loads its two bodies' velocities into int64 locals, solves its rows
  * without intermediate saturation, and clamps once when it stores them. That is safe
- * because every quantity is bounded:
- *   accumulated lambdas are kept within +-LAMBDA_MAX = 2^27 (2048 m/s of velocity change,
- *   far beyond anything the envelope produces), so one row changes a linear velocity
- *   by at most 2^28 (|k n| <= 1) and an angular one by 2^28 * 2^7 (|g| < 128 / m);
- *   stored velocities are within +-VELOCITY_MAX = 2^29 (8192 m/s, rad/s; an angular
- *   velocity just integrated from a saturated torque within +-2^31), so after the at
- *   most 4 rows of a constraint |v| < 2^31 and every product below fits in int64
- *   (d . dv < 2^30 * 2^32, w (r x d) < 2^38 * 2^23) but for the soft row's mass scale
- *   times the relative speed, which has the wide path of mass_scale_times. */
-#define LAMBDA_MAX (INT64_C(1) << 27)
-#define VELOCITY_MAX (INT64_C(1) << 29)
+ * because every quantity is bounded (L = LAMBDA_MAX = 2^29, 8192 m/s: see
+ * world_internal.h for why):
+ *   a normal row's lambda stays in [0, L], a friction row's in [-L, L], so one row
+ *   changes lambda by |dl| <= 2^29 (normal, restitution, warm start) or 2^30 (friction),
+ *   a linear velocity by at most |dl| (|k n| <= 1, as a vector) and an angular one by
+ *   |dl| 2^7 (|g| < 128 / m);
+ *   velocities enter within +-VELOCITY_MAX = 2^29 per component (2^29.5 as a vector;
+ *   an angular velocity just integrated from a saturated torque within +-2^31);
+ *   the rows of a constraint run normal, normal, friction, friction, so the last one
+ *   reads |vB - vA| <= 2^30.5 + 2 (2^29 + 2^29 + 2^30) < 2^32.4 and |w| < 2^31 +
+ *   2^36 + 2^36 + 2^37 < 2^38.1. Then every product below fits int64: d . (vB - vA)
+ *   <= |d| |vB - vA| < 2^30 2^32.4 (Cauchy-Schwarz bounds the sum too), w (r x d) <
+ *   2^38.1 2^23.6 (anchors lie within 200 m of a body's centre), the difference of two
+ *   such < 2^62.7, dl l < 2^60, dl g < 2^61; but for the soft row's mass scale times
+ *   the relative speed, which has the wide path of mass_scale_times. */
+#define LAMBDA_MAX ((int64_t)PG_SOLVER_LAMBDA_MAX)
+#define VELOCITY_MAX ((int64_t)PG_SOLVER_VELOCITY_MAX)
 
 typedef struct velocity { int64_t x, y, w; } velocity;
 
@@ -705,7 +709,12 @@ void pg__solve(pg_world *w)
                 p->rA = pg_v2(pg__sat64((int64_t)cp->point.x - hx - A_center.x), pg__sat64((int64_t)cp->point.y - hy - A_center.y));
                 p->rB = pg_v2(pg__sat64((int64_t)cp->point.x + hx - B_center.x), pg__sat64((int64_t)cp->point.y + hy - B_center.y));
             }
-            p->adjusted_separation = cp->separation - dot_dv(c->n, pg_v2_sub(p->rB, p->rA));
+            {
+                /* in int64: a restored snapshot may hold any contact point, and anchors
+                 * saturated at the edge of the range are up to 2^32 apart */
+                int64_t dx = (int64_t)p->rB.x - p->rA.x, dy = (int64_t)p->rB.y - p->rA.y;
+                p->adjusted_separation = pg__sat64((int64_t)cp->separation - pg__round_shift64(c->n.x * dx + c->n.y * dy, 30));
+            }
             /* No torque about a round side's centre, and none on a side that cannot turn
              * in this step (its angular velocity is 0 and its inverse inertia too). */
             p->cnA = c->round_a || !activeA || !rotation ? 0 : cross_rd(p->rA, c->n);

@@ -24,13 +24,13 @@
  * value beyond these: only corruption makes one, and the step's arithmetic relies on
  * them (an accumulated force beyond FORCE_LIMIT overflows the next pg_body_apply_force,
  * a contact friction of -2^31 the solver's rows). Keep them in step with the sources. */
-#define LIMIT_VELOCITY (INT32_C(1) << 29)  /* solver.c VELOCITY_MAX: the solver clamps each velocity
+#define LIMIT_VELOCITY PG_SOLVER_VELOCITY_MAX /* the solver clamps each velocity
                                               component (m/s) and the angular velocity (rad/s) to it;
                                               the setters stay within max_linear_speed <= 4096 m/s and
                                               1000 rad/s, below it */
 #define LIMIT_FORCE (INT64_C(1) << 60)     /* body.c FORCE_LIMIT: pg_body_apply_force* clamp the
                                               accumulated force and torque to it */
-#define LIMIT_LAMBDA (INT32_C(1) << 27)    /* solver.c LAMBDA_MAX: accumulated contact impulses */
+#define LIMIT_LAMBDA PG_SOLVER_LAMBDA_MAX   /* accumulated contact impulses */
 #define LIMIT_DAMPING PG_FIX_C(1000)       /* body.c: damping 0..1000 per second */
 #define LIMIT_GRAVITY_SCALE PG_FIX_C(100)  /* body.c: gravity scale -100..100 */
 #define LIMIT_SLEEP_TIME PG_FIX_C(1001)    /* island.c: the timer grows by one step (<= 1 s) while
@@ -707,14 +707,14 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                     /* the solver keeps the accumulated impulses within its LAMBDA_MAX */
                     at = r->pos;
                     cp->normal_impulse = take_i32(r, "contact.normal_impulse");
-                    if (cp->normal_impulse < 0 || cp->normal_impulse > LIMIT_LAMBDA) invalid(r, at, "contact.normal_impulse (outside 0..2^27)");
+                    if (cp->normal_impulse < 0 || cp->normal_impulse > LIMIT_LAMBDA) invalid(r, at, "contact.normal_impulse (outside 0..2^29)");
                     at = r->pos;
                     cp->tangent_impulse = take_i32(r, "contact.tangent_impulse");
-                    if (!within(cp->tangent_impulse, LIMIT_LAMBDA)) invalid(r, at, "contact.tangent_impulse (beyond +-2^27)");
+                    if (!within(cp->tangent_impulse, LIMIT_LAMBDA)) invalid(r, at, "contact.tangent_impulse (beyond +-2^29)");
                     at = r->pos;
                     cp->max_normal_impulse = take_i32(r, "contact.max_normal_impulse");
                     if (cp->max_normal_impulse < 0 || cp->max_normal_impulse > LIMIT_LAMBDA)
-                        invalid(r, at, "contact.max_normal_impulse (outside 0..2^27)");
+                        invalid(r, at, "contact.max_normal_impulse (outside 0..2^29)");
                 }
                 if (w != NULL) w->contacts[i] = c;
             }

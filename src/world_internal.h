@@ -29,6 +29,15 @@
 #define PG_ENV_MAX_POSITION PG_FIX_C(1000)
 #define PG_ENV_MAX_FRICTION PG_FIX_C(10)
 
+/* The contact solver's bounds (solver.c derives its int64 arithmetic from them; state.c
+ * refuses a snapshot beyond them). Velocities, m/s and rad/s: every component is clamped
+ * to +-PG_SOLVER_VELOCITY_MAX (8192). Accumulated contact "impulses" (lambda: the change
+ * of relative velocity along the row, m/s) to +-PG_SOLVER_LAMBDA_MAX (8192): two bodies
+ * meeting head-on at the largest max_linear_speed (4096 m/s) close at 8192 m/s, and one
+ * row must be able to stop them, or a speculative contact lets them pass through. */
+#define PG_SOLVER_VELOCITY_MAX (INT32_C(1) << 29)
+#define PG_SOLVER_LAMBDA_MAX (INT32_C(1) << 29)
+
 enum {
     PG_BODY_FLAG_USED = 1u << 0,
     PG_BODY_FLAG_AWAKE = 1u << 1,

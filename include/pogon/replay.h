@@ -163,7 +163,7 @@ pg_result pg_world_snapshot_save(const pg_world *world, void *buffer, size_t cap
  * and the step ever write (velocities beyond 8192 m/s or rad/s per component, forces and
  * torques beyond the accumulators' 2^60, damping, gravity scale or sleep timers outside
  * their ranges, contact materials outside the shapes', normals that are not unit
- * vectors, overlaps deeper than 1024 m, impulses beyond the solver's 2^27). Positions
+ * vectors, overlaps deeper than 1024 m, impulses beyond the solver's 2^29). Positions
  * are not limited: a body may have flown out of the envelope. PG_ERR_NULL for a NULL
  * world or snapshot. */
 pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_t size);

@@ -117,6 +117,67 @@ static void test_force_at_a_point_on_a_body_far_outside(void **state)
     free_world(&t);
 }
 
+/* The widest speculative window the envelope allows: step_hz 1, max_linear_speed 4096 m/s,
+ * continuous collision on. Two bodies meeting head-on at full speed close at 8192 m/s
+ * and get a window of 8192 m, past the 2^28 raw (4096 m) that collide.c's bounds were
+ * first written for; stopping them takes a row's lambda of 8192 m/s, four times the
+ * solver's old LAMBDA_MAX (they passed through each other untouched). Every pair of
+ * shape kinds must collide without overflow (UBSan in the debug-asan preset) and
+ * exchange an impulse in the step they meet, and a ball must stay on its side of a ball
+ * or a box face it hits square on (a triangle or a star turns a slanted face to it, so
+ * it glances off and flies on). (Two boxes do not: meeting face to face at 200 m/s or more, the one solver pass
+ * per substep leaves them a spin, and from about 400 m/s they tumble past each other;
+ * docs/hard-cases.md, "Head-on boxes".) */
+static void test_widest_speculative_window(void **state)
+{
+    typedef pg_result (*maker)(pg_world *, const pg_body_def *, const pg_shape_def *, pg_fix, pg_body_id *);
+    static const char *const names[] = {"ball", "box", "triangle", "star"};
+    int ka, kb;
+    (void)state;
+    for (ka = 0; ka < 4; ++ka)
+        for (kb = 0; kb < 4; ++kb) {
+            pg_world_def d = pg_default_world_def();
+            test_world t;
+            pg_shape_def sd = pg_default_shape_def();
+            pg_body_def bd;
+            pg_body_id body[2];
+            const pg_fix speed = PG_FIX_C(4096);
+            int i;
+            d.gravity = pg_v2(0, 0);
+            d.step_hz = 1;
+            d.max_linear_speed = speed;
+            d.max_bodies = 4;
+            d.max_shapes = 4;
+            d.max_contacts = 8;
+            t = make_world_def(&d);
+            for (i = 0; i < 2; ++i) {
+                int kind = i == 0 ? ka : kb;
+                pg_result r;
+                bd = dynamic_at(i == 0 ? -700.0 : 700.0, 0);
+                bd.linear_velocity = pg_v2(i == 0 ? speed : -speed, 0);
+                bd.allow_sleep = 0;
+                if (kind == 1) r = pg_make_box(t.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &body[i]);
+                else {
+                    maker m = kind == 0 ? pg_make_ball : kind == 2 ? pg_make_triangle : pg_make_star;
+                    r = m(t.w, &bd, &sd, PG_FIX_ONE / 2, &body[i]);
+                }
+                assert_int_equal(r, PG_OK);
+            }
+            for (i = 0; i < 4; ++i) {
+                pg_vec2 pa, pb, va;
+                assert_int_equal(pg_world_step(t.w), PG_OK);
+                pa = pg_body_position(t.w, body[0]);
+                pb = pg_body_position(t.w, body[1]);
+                va = pg_body_linear_velocity(t.w, body[0]);
+                print_message("%s against %s, step %d: a at (%.1f, %.1f) moving (%.1f, %.1f); b at (%.1f, %.1f)\n", names[ka], names[kb], i + 1,
+                              fd(pa.x), fd(pa.y), fd(va.x), fd(va.y), fd(pb.x), fd(pb.y));
+                if (i == 0 && va.x > PG_FIX_C(3000)) fail_msg("%s against %s: no impulse in the step they met", names[ka], names[kb]);
+                if (ka < 2 && kb < 2 && (ka == 0 || kb == 0) && pa.x >= pb.x) fail_msg("%s against %s: passed through at step %d", names[ka], names[kb], i + 1);
+            }
+            free_world(&t);
+        }
+}
+
 /* A static body becoming dynamic: its shapes' densities must be a dynamic body's. Before,
  * a density-0 wall became a 1 kg point that never turned. */
 static void test_set_type_checks_the_densities(void **state)
@@ -239,6 +300,7 @@ int main(void)
         cmocka_unit_test(test_most_negative_velocity_is_refused),
         cmocka_unit_test(test_clamped_velocity_is_within_the_cap),
         cmocka_unit_test(test_force_at_a_point_on_a_body_far_outside),
+        cmocka_unit_test(test_widest_speculative_window),
         cmocka_unit_test(test_set_type_checks_the_densities),
         cmocka_unit_test(test_static_body_with_velocity_is_refused),
         cmocka_unit_test(test_hand_built_geometry),

@@ -814,7 +814,7 @@ static void test_inconsistent_snapshots_refused(void **state)
      * src/state.c): a velocity component within the solver's 2^29 (8192 m/s), forces
      * within the accumulators' 2^60 (body.c), damping 0..1000, gravity scale -100..100,
      * a sleep timer 0..1001 s, contact materials a mix of the shapes' (friction 0..10,
-     * restitution 0..1), unit normals and impulses within the solver's 2^27. Outside,
+     * restitution 0..1), unit normals and impulses within the solver's 2^29. Outside,
      * the next call or step overflows (pg_body_apply_force on a force of INT64_MAX, the
      * solver on a friction of -2^31) or divides by zero (damping -N). What the world can
      * reach is accepted: the bounds themselves, and a body flown out to the edge of
@@ -938,16 +938,16 @@ static void test_inconsistent_snapshots_refused(void **state)
         expect_bytes_accepted(&r, r.copy, s.size, "contact.normal (0, -1)");
         put32(fresh_copy(&r) + c0 + 49, (uint32_t)-1);
         expect_corruption_refused(&r, "contact.normal_impulse negative");
-        put32(fresh_copy(&r) + c0 + 49, (1u << 27) + 1u);
-        expect_corruption_refused(&r, "contact.normal_impulse 2^27 + 1");
+        put32(fresh_copy(&r) + c0 + 49, (1u << 29) + 1u);
+        expect_corruption_refused(&r, "contact.normal_impulse 2^29 + 1");
         put32(fresh_copy(&r) + c0 + 53, 0x80000000u);
         expect_corruption_refused(&r, "contact.tangent_impulse INT32_MIN");
         put32(fresh_copy(&r) + c0 + 57, 0x7FFFFFFFu);
         expect_corruption_refused(&r, "contact.max_normal_impulse INT32_MAX");
-        put32(fresh_copy(&r) + c0 + 49, 1u << 27);
-        put32(r.copy + c0 + 53, (uint32_t)-(INT32_C(1) << 27));
-        put32(r.copy + c0 + 57, 1u << 27);
-        expect_bytes_accepted(&r, r.copy, s.size, "contact impulses at the solver's bound 2^27");
+        put32(fresh_copy(&r) + c0 + 49, 1u << 29);
+        put32(r.copy + c0 + 53, (uint32_t)-(INT32_C(1) << 29));
+        put32(r.copy + c0 + 57, 1u << 29);
+        expect_bytes_accepted(&r, r.copy, s.size, "contact impulses at the solver's bound 2^29");
         t_free(big);
     }
     if (pg_world_hash(r.target.w) != r.hash) fail_msg("%s", "the target world changed");

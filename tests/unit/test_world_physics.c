@@ -1221,7 +1221,12 @@ static void test_light_ball_on_long_massless_stick(void **state)
  * saturates at 32768 rad/s^2) high in the air for half a second, then falls spinning
  * onto the ground. With no torque any more, contacts may only take energy out: the
  * total energy must never grow (beyond the soft contacts' push-out, far below 1 J), and
- * w stays within the solver's clamp. */
+ * w stays within the solver's clamp. The contact has restitution 0, so it takes energy
+ * out: at most half of the spin's is left. (While the solver capped a row's lambda at
+ * 2048 m/s, the strike could not stop the stick's end, which moves at 8192 rad/s times
+ * up to 50 m, and the stick ground on the floor until under 100 J was left; now the
+ * strike stops the end in one row and throws the stick up at about 340 m/s with a tenth
+ * of the energy.) */
 static void test_fast_spinning_long_stick_hits_the_ground(void **state)
 {
     test_world t = make_world(PG_EFFECTS_ALL);
@@ -1265,7 +1270,7 @@ static void test_fast_spinning_long_stick_hits_the_ground(void **state)
     print_message("spinning stick: energy %.1f J after the spin-up, %.3f J at the end\n", e_spun, e_prev);
     assert_true(touched);
     assert_true(e_spun > 40000.0); /* it did spin: 1/2 I w^2 at 8192 rad/s is 42200 J */
-    assert_true(e_prev < 100.0);   /* and the ground took it out */
+    PG_EXPECT_LE(e_prev, 0.5 * e_spun, "%s", "energy (J) after 10 s: the ground took at least half of it");
     free_world(&t);
 }
 
