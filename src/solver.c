@@ -20,9 +20,29 @@
  * |lambda_t| <= f (Kt/Kn) lambda_n with the ratio precomputed. Warm starting applies the
  * stored lambda with the new step's coefficients.
  *
- * SYMMETRY: the two points of a manifold are solved in alternating order (even substeps
- * 0 then 1, odd ones 1 then 0) and all rounding is symmetric in sign, so a symmetric
- * column gets no sideways push from the solver's order.
+ * BLOCK: the two normal rows of a two-point manifold are solved together. One after the
+ * other, the first row takes the whole blow of an impact through its own point and
+ * leaves the body a spin the second can only partly undo in one pass: two 1 m boxes
+ * meeting face to face at 200 m/s separated spinning at 13.6 rad/s, at 400 m/s they
+ * tumbled past each other, and a box landing flat drifted 6 mm. In lambda units a
+ * change dl_q of row q changes row p's relative normal speed by e_pq dl_q, e_pp = 1 and
+ * e_pq = K_pq / K_qq (setup_block computes it from the rows' own coefficients, so it is
+ * exactly what apply_row does). The pair's soft step is Box2D v3's soft row with the
+ * 2x2 effective mass in place of each row's own:
+ *     dl = -mass_scale E^-1 (v + bias) - impulse_scale lambda     (rigid rows: -E^-1 v')
+ * with v the relative normal speeds and E = [1 e01; e10 1]. For two points sinking
+ * alike this is a spring of stiffness omega^2 / (1/mA + 1/mB): the contact's hertz is
+ * the frequency of the two bodies on each other, as for a single point on a round body
+ * (row by row, each point was a spring of its own row's mass, and a 1 m box's face 1.25
+ * times softer than that: test_stacking has the model). Where a row would pull
+ * (lambda < 0: one point lifts off), or the couplings are ill-conditioned (|e| > 1 or
+ * det = 1 - e01 e10 < 1/16: the two rows nearly alike, as for a tall thin box on its
+ * end), the rows are solved one after the other as before.
+ *
+ * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
+ * 1, odd ones 1 then 0); the block is the same in either order; and all rounding is
+ * symmetric in sign, so a symmetric column gets no sideways push from the solver's
+ * order.
  */
 #include "wide.h"
 #include "intmath.h"
@@ -35,17 +55,13 @@
 #else
 #define PG__INLINE_ROW static inline
 #endif
-/* clang (and so emcc) leaves the normal row and the per-pass constraint functions out of
- * line, where use_bias and the cached separation are tested at run time and the two
+/* Compilers leave the normal rows and the per-pass constraint functions out of line,
+ * where use_bias and the cached separation are tested at run time and the two
  * velocities live in memory (in wasm, on the shadow stack). Inlined into pg__solve's
- * loops, each pass gets its own specialised copy: 7 % fewer instructions with clang
- * (callgrind, awake pyramid) and 6 % less time in node. gcc inlines them by itself, and
- * forcing it there costs 0.8 %. */
-#if defined(__clang__)
+ * loops, each pass gets its own specialised copy: clang (and so emcc) 7 % fewer
+ * instructions (callgrind, awake pyramid) and 6 % less time in node; gcc 12, which
+ * inlined them by itself until the block solve, 7.5 % fewer since. */
 #define PG__INLINE_PASS PG__INLINE_ROW
-#else
-#define PG__INLINE_PASS static inline
-#endif
 #if defined(__GNUC__) || defined(__clang__)
 #define PG__NOINLINE static __attribute__((noinline))
 #else
@@ -93,6 +109,10 @@ typedef struct constraint {
     int32_t normal_linear;   /* r x n = 0 on both sides of every point: the normal rows have
                                 no angular part (two round sides, or round and static) */
     pg_fix restitution;
+    int32_t block;           /* the two normal rows are solved together (BLOCK) */
+    int32_t e01, e10;        /* Q2.30: what a unit of lambda on point 1 does to point 0's
+                                normal speed, and the other way; |e| <= 1 */
+    int32_t inv_det;         /* Q8.24: 1 / (1 - e01 e10), at most 16 */
     constraint_point p[2];
 } constraint;
 
@@ -262,6 +282,40 @@ static denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix c
     return den;
 }
 
+/* What a unit of lambda on point q's normal row does to point p's relative normal speed,
+ * Q2.30: exactly what apply_row and relative_speed make of it, the linear part
+ * n . (kA + kB) n and the angular part (r x n)_p g_q on each side. */
+static int64_t coupling(pg_dir n, const constraint_point *p, const constraint_point *q)
+{
+    int64_t lin = pg__round_shift64((int64_t)n.x * ((int64_t)q->lnA_x + q->lnB_x) + (int64_t)n.y * ((int64_t)q->lnA_y + q->lnB_y), 30);
+    return lin + pg__round_shift64((int64_t)p->cnA * q->gnA + (int64_t)p->cnB * q->gnB, 10);
+}
+
+/* Whether the two normal rows of c are solved together, and their coupling. Only when
+ * both couplings are within +-1 and the 2x2 system is well conditioned, det = 1 - e01 e10
+ * >= 1/16 (Box2D 2.4 asks for a condition number below 1000 of its block solver): two
+ * points far apart on a body's face. A tall thin box standing on its end (the rows nearly
+ * alike, det -> 0), a body that cannot turn in this step (the rows are alike) and a
+ * single point are solved row by row. */
+static void setup_block(constraint *c)
+{
+    const int64_t one = INT64_C(1) << 30;
+    int64_t e01, e10, det;
+    c->block = 0;
+    c->e01 = c->e10 = 0;
+    c->inv_det = 1 << 24;
+    if (c->count != 2 || c->normal_linear) return;
+    e01 = coupling(c->n, &c->p[0], &c->p[1]);
+    e10 = coupling(c->n, &c->p[1], &c->p[0]);
+    if (e01 > one || e01 < -one || e10 > one || e10 < -one) return;
+    det = one - pg__round_shift64(e01 * e10, 30);
+    if (det < one / 16) return;
+    c->block = 1;
+    c->e01 = (int32_t)e01;
+    c->e10 = (int32_t)e10;
+    c->inv_det = (int32_t)(((INT64_C(1) << 54) + det / 2) / det);
+}
+
 /* What a side that does not move in this step looks like to the rows: no inverse mass,
  * no inverse inertia. */
 static const pg_body immovable;
@@ -419,40 +473,101 @@ static inline int64_t mass_scale_times(int32_t m, int64_t x)
     return mass_scale_times_wide(m, x);
 }
 
-/* One normal row, soft (use_bias) or rigid (relax), speculative where the gap is open. */
-PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft, const constraint *c, const solver_body *A,
-                                const solver_body *B, velocity *va, velocity *vb, constraint_point *p, int use_bias, int linear)
+/* The current separation of a point: from where its anchors are now, or in the soft pass
+ * of substeps 1.. the one the relax pass measured (nothing has moved since). The relax
+ * pass stores it for that. */
+PG__INLINE_PASS int64_t normal_separation(const step_context *ctx, const constraint *c, const solver_body *A, const solver_body *B,
+                                          constraint_point *p, int use_bias)
 {
-    const pg_dir n = c->n;
-    int64_t s, acc, rel;
-    if (use_bias && ctx->separation_cached) {
-        s = p->separation; /* the relax pass measured it, and nothing has moved since */
-    } else {
-        /* current separation from where the anchors are now */
-        int64_t ax, ay, bx, by;
-        anchor_now(A, p->rA, c->round_a, &ax, &ay);
-        anchor_now(B, p->rB, c->round_b, &bx, &by);
-        s = pg__round_shift64(n.x * (bx - ax) + n.y * (by - ay), 30) + p->adjusted_separation;
-        if (!use_bias) p->separation = s;
-    }
-    rel = linear ? linear_speed(va, vb, n) : relative_speed(va, vb, n, p->cnA, p->cnB);
-    if (s > 0) {
-        /* speculative: close the gap in one substep, no more */
-        acc = (int64_t)p->normal_impulse - (rel + s * ctx->n);
-    } else if (use_bias) {
+    int64_t s, ax, ay, bx, by;
+    if (use_bias && ctx->separation_cached) return p->separation;
+    anchor_now(A, p->rA, c->round_a, &ax, &ay);
+    anchor_now(B, p->rB, c->round_b, &bx, &by);
+    s = pg__round_shift64(c->n.x * (bx - ax) + c->n.y * (by - ay), 30) + p->adjusted_separation;
+    if (!use_bias) p->separation = s;
+    return s;
+}
+
+PG__INLINE_ROW int64_t normal_speed(const constraint *c, const velocity *va, const velocity *vb, const constraint_point *p)
+{
+    return c->normal_linear ? linear_speed(va, vb, c->n) : relative_speed(va, vb, c->n, p->cnA, p->cnB);
+}
+
+/* What a normal row wants of the relative normal speed rel at separation s: b = rel +
+ * bias, which the row drives to 0, and whether the row is soft (scaled by the soft mass
+ * and impulse scales) or rigid. Speculative (s > 0): close the gap in one substep, no
+ * more; touching, in the soft pass: push out at the soft bias rate, capped; in the
+ * relax pass: no bias. */
+PG__INLINE_ROW int64_t normal_target(const step_context *ctx, const softness *soft, int64_t s, int64_t rel, int use_bias, int *is_soft)
+{
+    *is_soft = 0;
+    if (s > 0) return rel + s * ctx->n;
+    if (use_bias) {
         int64_t bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
         if (bias < -ctx->push_max) bias = -ctx->push_max;
-        acc = (int64_t)p->normal_impulse - mass_scale_times(soft->mass_scale, rel + bias) -
-              pg__round_shift64((int64_t)soft->impulse_scale * p->normal_impulse, 30);
-    } else {
-        acc = (int64_t)p->normal_impulse - rel;
+        *is_soft = 1;
+        return rel + bias;
     }
+    return rel;
+}
+
+/* The new accumulated lambda of a row whose unscaled change is -y: lambda - y (rigid), or
+ * lambda - soft mass scale y - soft impulse scale lambda (soft). */
+PG__INLINE_ROW int64_t normal_update(const softness *soft, const constraint_point *p, int64_t y, int is_soft)
+{
+    if (!is_soft) return (int64_t)p->normal_impulse - y;
+    return (int64_t)p->normal_impulse - mass_scale_times(soft->mass_scale, y) - pg__round_shift64((int64_t)soft->impulse_scale * p->normal_impulse, 30);
+}
+
+/* Store a normal row's new lambda acc (clamped to [0, LAMBDA_MAX]) and apply the change.
+ * Returns whether anything changed. */
+PG__INLINE_ROW int normal_apply(const constraint *c, velocity *va, velocity *vb, constraint_point *p, int64_t acc)
+{
     acc = clamp_lambda(acc, 0, LAMBDA_MAX);
     if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
-    if (acc == p->normal_impulse) return; /* a quarter of the pyramid's rows: open gaps */
-    if (linear) apply_linear(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
+    if (acc == p->normal_impulse) return 0; /* a quarter of the pyramid's rows: open gaps */
+    if (c->normal_linear) apply_linear(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
     else apply_row(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
     p->normal_impulse = (pg_fix)acc;
+    return 1;
+}
+
+/* One normal row at separation s with relative normal speed rel (measured from va, vb
+ * as they are now). Returns whether it changed the velocities. */
+PG__INLINE_PASS int solve_normal(const step_context *ctx, const softness *soft, const constraint *c, velocity *va, velocity *vb,
+                                 constraint_point *p, int64_t s, int64_t rel, int use_bias)
+{
+    int is_soft;
+    int64_t b = normal_target(ctx, soft, s, rel, use_bias, &is_soft);
+    return normal_apply(c, va, vb, p, normal_update(soft, p, b, is_soft));
+}
+
+/* The two normal rows of a manifold solved together (the BLOCK in the header): with E
+ * the rows' coupling (E b is what lambda changes b by), the change -E^-1 b solves both
+ * at once, where one after the other the first takes the blow. Returns 0, having
+ * changed nothing, when a row would pull (lambda < 0) or a target is beyond the fast
+ * path; the rows are then solved one after the other. */
+PG__INLINE_PASS int solve_normal_pair(const step_context *ctx, const softness *soft, const constraint *c, velocity *va, velocity *vb,
+                                      constraint_point *p0, constraint_point *p1, int64_t s0, int64_t s1, int64_t rel0, int64_t rel1,
+                                      int use_bias, int swapped)
+{
+    /* p0, p1 are the manifold's points 0, 1, or 1, 0 when swapped: the result is the same */
+    const int32_t e01 = swapped ? c->e10 : c->e01, e10 = swapped ? c->e01 : c->e10;
+    int soft0, soft1;
+    int64_t b0 = normal_target(ctx, soft, s0, rel0, use_bias, &soft0);
+    int64_t b1 = normal_target(ctx, soft, s1, rel1, use_bias, &soft1);
+    int64_t y0, y1, acc0, acc1;
+    const uint64_t lim = UINT64_C(1) << 32;
+    if ((uint64_t)b0 + lim >= 2 * lim || (uint64_t)b1 + lim >= 2 * lim) return 0; /* |b| >= 2^32: 65536 m/s */
+    /* |b - e b'| < 2^33 (|e| <= 1), inv_det <= 2^28: the products fit */
+    y0 = pg__round_shift64((b0 - pg__round_shift64((int64_t)e01 * b1, 30)) * c->inv_det, 24);
+    y1 = pg__round_shift64((b1 - pg__round_shift64((int64_t)e10 * b0, 30)) * c->inv_det, 24);
+    acc0 = normal_update(soft, p0, y0, soft0);
+    acc1 = normal_update(soft, p1, y1, soft1);
+    if (acc0 < 0 || acc1 < 0) return 0;
+    normal_apply(c, va, vb, p0, acc0);
+    normal_apply(c, va, vb, p1, acc1);
+    return 1;
 }
 
 PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
@@ -460,17 +575,37 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     velocity va = load_velocity(A), vb = load_velocity(B);
     const softness *soft = c->soft_static ? &ctx->soft_static : &ctx->soft;
-    /* the two points alternate which goes first (see SYMMETRY above) */
     constraint_point *first = &c->p[0], *second = c->count > 1 ? &c->p[1] : NULL;
     pg_dir t;
     t.x = c->n.y;
     t.y = -c->n.x;
-    if (second != NULL && order) {
-        first = &c->p[1];
-        second = &c->p[0];
+    if (second == NULL) {
+        int64_t s = normal_separation(ctx, c, A, B, first, use_bias);
+        solve_normal(ctx, soft, c, &va, &vb, first, s, normal_speed(c, &va, &vb, first), use_bias);
+    } else {
+        int64_t s0 = normal_separation(ctx, c, A, B, first, use_bias), s1 = normal_separation(ctx, c, A, B, second, use_bias);
+        if (order) {
+            constraint_point *swap = first;
+            int64_t ss = s0;
+            first = second;
+            second = swap;
+            s0 = s1;
+            s1 = ss;
+        }
+        if (c->block) {
+            int64_t rel0 = normal_speed(c, &va, &vb, first), rel1 = normal_speed(c, &va, &vb, second);
+            if (!solve_normal_pair(ctx, soft, c, &va, &vb, first, second, s0, s1, rel0, rel1, use_bias, order)) {
+                /* one after the other; the second row's speed is measured again only if
+                 * the first changed it */
+                if (solve_normal(ctx, soft, c, &va, &vb, first, s0, rel0, use_bias)) rel1 = normal_speed(c, &va, &vb, second);
+                solve_normal(ctx, soft, c, &va, &vb, second, s1, rel1, use_bias);
+            }
+        } else {
+            /* one after the other, alternating which goes first (see SYMMETRY above) */
+            solve_normal(ctx, soft, c, &va, &vb, first, s0, normal_speed(c, &va, &vb, first), use_bias);
+            solve_normal(ctx, soft, c, &va, &vb, second, s1, normal_speed(c, &va, &vb, second), use_bias);
+        }
     }
-    solve_normal(ctx, soft, c, A, B, &va, &vb, first, use_bias, c->normal_linear);
-    if (second != NULL) solve_normal(ctx, soft, c, A, B, &va, &vb, second, use_bias, c->normal_linear);
     /* Friction after the normal rows, bounded by this pass's normal impulse (Box2D v3's
      * order). Before them, the relax pass bounded friction by the soft pass's impulse,
      * which carries less than the load until the contact has sunk to the soft spring's
@@ -737,6 +872,7 @@ void pg__solve(pg_world *w)
                 p->relative_velocity = pg__sat64(relative_speed(&va, &vb, c->n, p->cnA, p->cnB));
             }
         }
+        setup_block(c);
     }
 
     for (sub = 0; sub < w->def.substeps; ++sub) {
