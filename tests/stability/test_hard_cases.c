@@ -764,16 +764,19 @@ static void test_edge_smallest_box_rests(void **state)
     if (!ok) fail();
 }
 
-/* 100 m boxes (the largest body) on a 100 m ground: rest within 1 cm. */
+/* 100 m boxes (the largest body) on a 100 m ground: rest within 1 mm. (1 cm until session
+ * 5: a box landing flat drifted 6.3 mm, its two contact points solved one after the
+ * other; solved together the landing is symmetric and the drift 0. What is left of the
+ * 1 mm is the soft contact's sink, 0.07 mm under a 100 m box on a static side.) */
 static void test_edge_largest_box_rests(void **state)
 {
     int ok = 1;
     (void)state;
-    ok &= expect_rest("100 m box, density 0.1", drop_box(0, 0, 100, 100.0, 0.1, 1.0, 240), 0.01);
-    ok &= expect_rest("100 m box, density 1", drop_box(0, 0, 100, 100.0, 1.0, 1.0, 240), 0.01);
+    ok &= expect_rest("100 m box, density 0.1", drop_box(0, 0, 100, 100.0, 0.1, 1.0, 240), 0.001);
+    ok &= expect_rest("100 m box, density 1", drop_box(0, 0, 100, 100.0, 1.0, 1.0, 240), 0.001);
     /* 8 kg/m^2 is the densest a 100 m box may be: its inertia, 1.33e8 kg m^2, is the
      * largest Q28.36 holds. Denser is refused (below), never silently saturated. */
-    ok &= expect_rest("100 m box, density 8", drop_box(0, 0, 100, 100.0, 8.0, 1.0, 240), 0.01);
+    ok &= expect_rest("100 m box, density 8", drop_box(0, 0, 100, 100.0, 8.0, 1.0, 240), 0.001);
     {
         test_world t = make_world(PG_EFFECTS_ALL);
         pg_shape_def sd = pg_default_shape_def();

@@ -86,6 +86,8 @@ typedef struct constraint {
     int count, soft_static;
     int round_a, round_b; /* a circle: its surface looks the same however it turns */
     double restitution;
+    int block;        /* the two normal rows solved together, as pogon does */
+    double e01, e10;  /* what a unit of lambda on point 1 does to point 0's normal speed, and back */
     spoint p[2];
 } constraint;
 
@@ -634,30 +636,83 @@ static vec anchor_now(const sbody *b, vec r, int round)
 
 typedef struct step_ctx { double n; softness soft, soft_static; double push_max; int friction; } step_ctx;
 
+/* The normal row of point p at separation s: b = relative speed + bias (what the row
+ * drives to 0) and whether it is soft. */
+static double normal_target(const step_ctx *ctx, const softness *soft, double s, double rel, int use_bias, int *is_soft)
+{
+    *is_soft = 0;
+    if (s > 0) return rel + s * ctx->n;
+    if (use_bias) {
+        double bias = soft->bias_rate * s;
+        if (bias < -ctx->push_max) bias = -ctx->push_max;
+        *is_soft = 1;
+        return rel + bias;
+    }
+    return rel;
+}
+
+static double normal_update(const softness *soft, const spoint *p, double y, int is_soft)
+{
+    return is_soft ? p->ln - soft->mass_scale * y - soft->impulse_scale * p->ln : p->ln - y;
+}
+
+static void normal_apply(sbody *A, sbody *B, spoint *p, double acc)
+{
+    if (acc < 0) acc = 0;
+    apply(A, B, acc - p->ln, p->lnA, p->lnB, p->gnA, p->gnB);
+    p->ln = acc;
+    if (acc > p->max_ln) p->max_ln = acc;
+}
+
+/* What a unit of lambda on point q's normal row does to point p's relative normal speed. */
+static double coupling(vec n, const spoint *p, const spoint *q)
+{
+    return vdot(n, vadd(q->lnA, q->lnB)) + p->cnA * q->gnA + p->cnB * q->gnB;
+}
+
+static void setup_block(constraint *c)
+{
+    double det;
+    c->block = 0;
+    c->e01 = c->e10 = 0;
+    if (c->count != 2) return;
+    c->e01 = coupling(c->n, &c->p[0], &c->p[1]);
+    c->e10 = coupling(c->n, &c->p[1], &c->p[0]);
+    det = 1 - c->e01 * c->e10;
+    c->block = fabs(c->e01) <= 1 && fabs(c->e10) <= 1 && det >= 1.0 / 16;
+}
+
 static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias, int order)
 {
     sbody *A = sb_of(w, c->a), *B = sb_of(w, c->b);
     const softness *soft = c->soft_static ? &ctx->soft_static : &ctx->soft;
     vec n = c->n, t = v2(n.y, -n.x);
-    int k;
+    double s[2];
+    int k, done = 0;
     for (k = 0; k < c->count; ++k) {
-        spoint *p = &c->p[order ? c->count - 1 - k : k];
+        spoint *p = &c->p[k];
         vec da = anchor_now(A, p->rA, c->round_a), db = anchor_now(B, p->rB, c->round_b);
-        double s = vdot(n, vsub(db, da)) + p->adjusted, bias = 0, mass_scale = 1, impulse_scale = 0, lambda, acc;
-        if (s > 0) {
-            bias = s * ctx->n;
-        } else if (use_bias) {
-            bias = soft->bias_rate * s;
-            if (bias < -ctx->push_max) bias = -ctx->push_max;
-            mass_scale = soft->mass_scale;
-            impulse_scale = soft->impulse_scale;
+        s[k] = vdot(n, vsub(db, da)) + p->adjusted;
+    }
+    if (c->block) {
+        /* both rows at once: the change -E^-1 b (pogon's solver.c, BLOCK) */
+        spoint *p0 = &c->p[0], *p1 = &c->p[1];
+        int soft0, soft1;
+        double b0 = normal_target(ctx, soft, s[0], rel_speed(A, B, n, p0->cnA, p0->cnB), use_bias, &soft0);
+        double b1 = normal_target(ctx, soft, s[1], rel_speed(A, B, n, p1->cnA, p1->cnB), use_bias, &soft1);
+        double det = 1 - c->e01 * c->e10, y0 = (b0 - c->e01 * b1) / det, y1 = (b1 - c->e10 * b0) / det;
+        double acc0 = normal_update(soft, p0, y0, soft0), acc1 = normal_update(soft, p1, y1, soft1);
+        if (acc0 >= 0 && acc1 >= 0) {
+            normal_apply(A, B, p0, acc0);
+            normal_apply(A, B, p1, acc1);
+            done = 1;
         }
-        lambda = -mass_scale * (rel_speed(A, B, n, p->cnA, p->cnB) + bias) - impulse_scale * p->ln;
-        acc = p->ln + lambda;
-        if (acc < 0) acc = 0;
-        apply(A, B, acc - p->ln, p->lnA, p->lnB, p->gnA, p->gnB);
-        p->ln = acc;
-        if (acc > p->max_ln) p->max_ln = acc;
+    }
+    for (k = 0; !done && k < c->count; ++k) {
+        int i = order ? c->count - 1 - k : k, is_soft;
+        spoint *p = &c->p[i];
+        double b = normal_target(ctx, soft, s[i], rel_speed(A, B, n, p->cnA, p->cnB), use_bias, &is_soft);
+        normal_apply(A, B, p, normal_update(soft, p, b, is_soft));
     }
     if (ctx->friction) {
         for (k = 0; k < c->count; ++k) {
@@ -745,6 +800,7 @@ void ref_step(ref_world *w)
             p->max_ln = 0;
             p->relative_velocity = rel_speed(sb_of(w, c->a), sb_of(w, c->b), c->n, p->cnA, p->cnB);
         }
+        setup_block(c);
     }
     for (sub = 0; sub < d->substeps; ++sub) {
         int order = sub & 1;
