@@ -558,6 +558,9 @@ PG__INLINE_PASS int solve_normal_pair(const step_context *ctx, const softness *s
     int64_t b1 = normal_target(ctx, soft, s1, rel1, use_bias, &soft1);
     int64_t y0, y1, acc0, acc1;
     const uint64_t lim = UINT64_C(1) << 32;
+    /* both gaps open or opening and nothing held: each row, alone or together, would only
+     * clamp at 0 (a quarter of the pyramid's pairs: boxes side by side in a row) */
+    if (b0 >= 0 && b1 >= 0 && p0->normal_impulse == 0 && p1->normal_impulse == 0) return 1;
     if ((uint64_t)b0 + lim >= 2 * lim || (uint64_t)b1 + lim >= 2 * lim) return 0; /* |b| >= 2^32: 65536 m/s */
     /* |b - e b'| < 2^33 (|e| <= 1), inv_det <= 2^28: the products fit */
     y0 = pg__round_shift64((b0 - pg__round_shift64((int64_t)e01 * b1, 30)) * c->inv_det, 24);
