@@ -37,7 +37,9 @@
  * times softer than that: test_stacking has the model). Where a row would pull
  * (lambda < 0: one point lifts off), or the couplings are ill-conditioned (|e| > 1 or
  * det = 1 - e01 e10 < 1/16: the two rows nearly alike, as for a tall thin box on its
- * end), the rows are solved one after the other as before.
+ * end), the rows are solved one after the other as before. The restitution pass after
+ * the substeps does the same where both points bounce (a box landing flat with
+ * restitution 1 left its first bounce spinning at 11.7 rad/s).
  *
  * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
  * 1, odd ones 1 then 0); the block is the same in either order; and all rounding is
@@ -542,6 +544,21 @@ PG__INLINE_PASS int solve_normal(const step_context *ctx, const softness *soft, 
     return normal_apply(c, va, vb, p, normal_update(soft, p, b, is_soft));
 }
 
+/* y = E^-1 b for the pair's coupling E = [1 e01; e10 1]; |b0|, |b1| < 2^32, so
+ * |b - e b'| < 2^33 (|e| <= 1) and with inv_det <= 2^28 the products fit. */
+PG__INLINE_ROW void block_inverse(const constraint *c, int32_t e01, int32_t e10, int64_t b0, int64_t b1, int64_t *y0, int64_t *y1)
+{
+    *y0 = pg__round_shift64((b0 - pg__round_shift64((int64_t)e01 * b1, 30)) * c->inv_det, 24);
+    *y1 = pg__round_shift64((b1 - pg__round_shift64((int64_t)e10 * b0, 30)) * c->inv_det, 24);
+}
+
+/* Both |b| below 2^32 (65536 m/s): the block's fast path. */
+static inline int block_targets_fit(int64_t b0, int64_t b1)
+{
+    const uint64_t lim = UINT64_C(1) << 32;
+    return (uint64_t)b0 + lim < 2 * lim && (uint64_t)b1 + lim < 2 * lim;
+}
+
 /* The two normal rows of a manifold solved together (the BLOCK in the header): with E
  * the rows' coupling (E b is what lambda changes b by), the change -E^-1 b solves both
  * at once, where one after the other the first takes the blow. Returns 0, having
@@ -557,14 +574,11 @@ PG__INLINE_PASS int solve_normal_pair(const step_context *ctx, const softness *s
     int64_t b0 = normal_target(ctx, soft, s0, rel0, use_bias, &soft0);
     int64_t b1 = normal_target(ctx, soft, s1, rel1, use_bias, &soft1);
     int64_t y0, y1, acc0, acc1;
-    const uint64_t lim = UINT64_C(1) << 32;
     /* both gaps open or opening and nothing held: each row, alone or together, would only
      * clamp at 0 (a quarter of the pyramid's pairs: boxes side by side in a row) */
     if (b0 >= 0 && b1 >= 0 && p0->normal_impulse == 0 && p1->normal_impulse == 0) return 1;
-    if ((uint64_t)b0 + lim >= 2 * lim || (uint64_t)b1 + lim >= 2 * lim) return 0; /* |b| >= 2^32: 65536 m/s */
-    /* |b - e b'| < 2^33 (|e| <= 1), inv_det <= 2^28: the products fit */
-    y0 = pg__round_shift64((b0 - pg__round_shift64((int64_t)e01 * b1, 30)) * c->inv_det, 24);
-    y1 = pg__round_shift64((b1 - pg__round_shift64((int64_t)e10 * b0, 30)) * c->inv_det, 24);
+    if (!block_targets_fit(b0, b1)) return 0;
+    block_inverse(c, e01, e10, b0, b1, &y0, &y1);
     acc0 = normal_update(soft, p0, y0, soft0);
     acc1 = normal_update(soft, p1, y1, soft1);
     if (acc0 < 0 || acc1 < 0) return 0;
@@ -638,16 +652,44 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
     store_velocity(B, &vb);
 }
 
+/* A point bounces when it approached faster than the threshold at the step's start and
+ * the contact pushed during the step. */
+static inline int bounces(const constraint_point *p, pg_fix threshold) { return p->relative_velocity <= -threshold && p->max_normal_impulse != 0; }
+
 static void restitution(constraint *c, solver_body *bodies, pg_fix threshold)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     velocity va = load_velocity(A), vb = load_velocity(B);
     int32_t k;
     if (c->restitution == 0) return;
+    if (c->block && bounces(&c->p[0], threshold) && bounces(&c->p[1], threshold)) {
+        /* both points bounce: together, as the rows were solved (BLOCK), or the first
+         * point takes the whole rebound and a box landing flat leaves spinning */
+        constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
+        int64_t b0 = relative_speed(&va, &vb, c->n, p0->cnA, p0->cnB) + pg_fix_mul(c->restitution, p0->relative_velocity);
+        int64_t b1 = relative_speed(&va, &vb, c->n, p1->cnA, p1->cnB) + pg_fix_mul(c->restitution, p1->relative_velocity);
+        if (block_targets_fit(b0, b1)) {
+            int64_t y0, y1, acc0, acc1;
+            block_inverse(c, c->e01, c->e10, b0, b1, &y0, &y1);
+            acc0 = (int64_t)p0->normal_impulse - y0;
+            acc1 = (int64_t)p1->normal_impulse - y1;
+            if (acc0 >= 0 && acc1 >= 0) {
+                acc0 = clamp_lambda(acc0, 0, LAMBDA_MAX);
+                acc1 = clamp_lambda(acc1, 0, LAMBDA_MAX);
+                apply_row(&va, &vb, acc0 - p0->normal_impulse, p0->lnA_x, p0->lnA_y, p0->lnB_x, p0->lnB_y, p0->gnA, p0->gnB);
+                apply_row(&va, &vb, acc1 - p1->normal_impulse, p1->lnA_x, p1->lnA_y, p1->lnB_x, p1->lnB_y, p1->gnA, p1->gnB);
+                p0->normal_impulse = (pg_fix)acc0;
+                p1->normal_impulse = (pg_fix)acc1;
+                store_velocity(A, &va);
+                store_velocity(B, &vb);
+                return;
+            }
+        }
+    }
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
         int64_t acc;
-        if (p->relative_velocity > -threshold || p->max_normal_impulse == 0) continue;
+        if (!bounces(p, threshold)) continue;
         acc = (int64_t)p->normal_impulse - (relative_speed(&va, &vb, c->n, p->cnA, p->cnB) + pg_fix_mul(c->restitution, p->relative_velocity));
         acc = clamp_lambda(acc, 0, LAMBDA_MAX);
         apply_row(&va, &vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);

@@ -839,6 +839,21 @@ void ref_step(ref_world *w)
             constraint *c = &w->cons[i];
             sbody *A = sb_of(w, c->a), *B = sb_of(w, c->b);
             if (c->restitution == 0) continue;
+            if (c->block && c->p[0].relative_velocity <= -d->restitution_threshold && c->p[0].max_ln != 0 &&
+                c->p[1].relative_velocity <= -d->restitution_threshold && c->p[1].max_ln != 0) {
+                /* both points bounce: together (pogon's solver.c, BLOCK) */
+                spoint *p0 = &c->p[0], *p1 = &c->p[1];
+                double b0 = rel_speed(A, B, c->n, p0->cnA, p0->cnB) + c->restitution * p0->relative_velocity;
+                double b1 = rel_speed(A, B, c->n, p1->cnA, p1->cnB) + c->restitution * p1->relative_velocity;
+                double det = 1 - c->e01 * c->e10, acc0 = p0->ln - (b0 - c->e01 * b1) / det, acc1 = p1->ln - (b1 - c->e10 * b0) / det;
+                if (acc0 >= 0 && acc1 >= 0) {
+                    apply(A, B, acc0 - p0->ln, p0->lnA, p0->lnB, p0->gnA, p0->gnB);
+                    apply(A, B, acc1 - p1->ln, p1->lnA, p1->lnB, p1->gnA, p1->gnB);
+                    p0->ln = acc0;
+                    p1->ln = acc1;
+                    continue;
+                }
+            }
             for (k = 0; k < c->count; ++k) {
                 spoint *p = &c->p[k];
                 double lambda, acc;
