@@ -2,6 +2,7 @@
  * its canonical binary encoding, and a queue for later frames. */
 #include "pogon/replay.h"
 #include "wide.h"
+#include "text.h"
 #include "world_internal.h" /* pg__fail: messages in pg_world_last_error */
 
 static const char *const kind_names[PG_CMD_KIND_COUNT] = {
@@ -59,37 +60,16 @@ static const uint32_t kind_fields[PG_CMD_KIND_COUNT] = {
     F_BODY | F_USER                              /* set_user_data */
 };
 
-/* ---- messages (no snprintf in the library) ------------------------------------------------ */
-typedef struct text { char buf[144]; size_t len; } text;
+/* ---- messages (text.h) ----------------------------------------------------------------- */
+typedef struct text { char buf[144]; pg__text out; } text;
 
-static void put_text(text *t, const char *s)
-{
-    while (*s != '\0' && t->len + 1 < sizeof t->buf) t->buf[t->len++] = *s++;
-    t->buf[t->len] = '\0';
-}
-
-static void put_uint(text *t, uint64_t m)
-{
-    char tmp[24];
-    int n = 0;
-    do {
-        tmp[n++] = (char)('0' + (int)(m % 10u));
-        m /= 10u;
-    } while (m != 0u);
-    while (n > 0 && t->len + 1 < sizeof t->buf) t->buf[t->len++] = tmp[--n];
-    t->buf[t->len] = '\0';
-}
-
-static void put_int(text *t, int64_t v)
-{
-    if (v < 0) put_text(t, "-");
-    put_uint(t, pg__mag64(v));
-}
+static void put_text(text *t, const char *s) { pg__text_put(&t->out, s); }
+static void put_uint(text *t, uint64_t v) { pg__text_u64(&t->out, v); }
+static void put_int(text *t, int64_t v) { pg__text_i64(&t->out, v); }
 
 static void start(text *t, const char *fn)
 {
-    t->len = 0;
-    t->buf[0] = '\0';
+    t->out = pg__text_in(t->buf, sizeof t->buf);
     put_text(t, fn);
     put_text(t, ": ");
 }

@@ -14,35 +14,20 @@
  * products with Q2.30 normals stay below 2^62.5 and only their differences are
  * combined. A ray additionally has both ends within the envelope (checked), so every
  * shape it is tested against lies within a shape's size of +-1000 m. */
+#include "text.h"
 #include "world_internal.h"
 
 static int boxes_overlap(pg_aabb a, pg_aabb b) { return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y; }
 
-/* ---- messages (no snprintf in the library) ------------------------------------------------ */
-typedef struct text { char buf[144]; size_t len; } text;
-
-static void put(text *t, const char *s)
-{
-    while (*s != '\0' && t->len + 1 < sizeof t->buf) t->buf[t->len++] = *s++;
-    t->buf[t->len] = '\0';
-}
-
-static void put_fix(text *t, pg_fix v)
-{
-    char num[PG_FIX_FORMAT_MAX];
-    pg_fix_format(v, num, sizeof num);
-    put(t, num);
-}
-
+/* ---- messages --------------------------------------------------------------------------- */
 static pg_result fail2(const pg_world *w, pg_result r, const char *fn, const char *detail)
 {
-    text t;
-    t.len = 0;
-    t.buf[0] = '\0';
-    put(&t, fn);
-    put(&t, ": ");
-    put(&t, detail);
-    return pg__fail(w, r, t.buf);
+    char buf[144];
+    pg__text t = pg__text_in(buf, sizeof buf);
+    pg__text_put(&t, fn);
+    pg__text_put(&t, ": ");
+    pg__text_put(&t, detail);
+    return pg__fail(w, r, buf);
 }
 
 /* What a geometry refused by pg__validate_geometry (the checks of pg_shape_create) has wrong. */
@@ -158,7 +143,8 @@ pg_result pg_world_find_free_position(const pg_world *w, const pg_geometry *geom
     pg_geom local;
     pg_rot rot;
     pg_result r;
-    text t;
+    char buf[144];
+    pg__text t;
     if (w == NULL) return PG_ERR_NULL;
     if (geometry == NULL) return fail2(w, PG_ERR_NULL, fn, "geometry is NULL");
     if (out == NULL) return fail2(w, PG_ERR_NULL, fn, "out is NULL");
@@ -182,14 +168,13 @@ pg_result pg_world_find_free_position(const pg_world *w, const pg_geometry *geom
             }
         }
     }
-    t.len = 0;
-    t.buf[0] = '\0';
-    put(&t, "no free position within max_distance ");
-    put_fix(&t, max_distance);
-    put(&t, " m (step ");
-    put_fix(&t, resolution);
-    put(&t, " m): search farther or place it elsewhere");
-    return fail2(w, PG_ERR_NOT_FOUND, fn, t.buf);
+    t = pg__text_in(buf, sizeof buf);
+    pg__text_put(&t, "no free position within max_distance ");
+    pg__text_fix(&t, max_distance);
+    pg__text_put(&t, " m (step ");
+    pg__text_fix(&t, resolution);
+    pg__text_put(&t, " m): search farther or place it elsewhere");
+    return fail2(w, PG_ERR_NOT_FOUND, fn, buf);
 }
 
 /* ---- ray casts -------------------------------------------------------------------------------- */
@@ -199,15 +184,14 @@ static int within_envelope(int64_t v) { return v >= -(int64_t)PG_ENV_MAX_POSITIO
 static pg_result ray_outside(const pg_world *w, const char *what, int64_t x, int64_t y)
 {
     int64_t v = within_envelope(x) ? y : x;
-    text t;
-    t.len = 0;
-    t.buf[0] = '\0';
-    put(&t, what);
-    put(&t, within_envelope(x) ? " y " : " x ");
-    if (v > PG_FIX_MAX || v < PG_FIX_MIN) put(&t, v > 0 ? "beyond 32768" : "beyond -32768");
-    else put_fix(&t, (pg_fix)v);
-    put(&t, " m is outside the envelope: both ends of a ray must lie within +-1000 m");
-    return fail2(w, PG_ERR_ENVELOPE, "pg_world_raycast", t.buf);
+    char buf[144];
+    pg__text t = pg__text_in(buf, sizeof buf);
+    pg__text_put(&t, what);
+    pg__text_put(&t, within_envelope(x) ? " y " : " x ");
+    if (v > PG_FIX_MAX || v < PG_FIX_MIN) pg__text_put(&t, v > 0 ? "beyond 32768" : "beyond -32768");
+    else pg__text_fix(&t, (pg_fix)v);
+    pg__text_put(&t, " m is outside the envelope: both ends of a ray must lie within +-1000 m");
+    return fail2(w, PG_ERR_ENVELOPE, "pg_world_raycast", buf);
 }
 
 /* The ray's box is widened by this much (Q16.16, about 1 mm) so that a hit a few LSB off the

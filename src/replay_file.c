@@ -3,6 +3,7 @@
  * against the size the caller gave. */
 #include "pogon/replay_file.h"
 #include "pogon/scene_file.h"
+#include "text.h"
 #include "world_internal.h" /* pg__fail: pg_replay_apply_frame's messages */
 
 /* ---- little-endian fields ------------------------------------------------------------ */
@@ -37,57 +38,25 @@ static uint64_t hash_range(const uint8_t *data, size_t begin, size_t end)
     return pg_hash_bytes(PG_HASH_SEED, data + begin, end - begin);
 }
 
-/* ---- error messages (no snprintf in the library) ---------------------------------------- */
-typedef struct msg { char *buf; size_t cap, len; } msg;
-
-static void msg_text(msg *m, const char *s)
-{
-    while (s != NULL && *s != '\0' && m->len + 1 < m->cap) m->buf[m->len++] = *s++;
-    m->buf[m->len] = '\0';
-}
-static void msg_u64(msg *m, uint64_t v)
-{
-    char tmp[24];
-    int n = 0;
-    do {
-        tmp[n++] = (char)('0' + (int)(v % 10u));
-        v /= 10u;
-    } while (v != 0u);
-    while (n > 0 && m->len + 1 < m->cap) m->buf[m->len++] = tmp[--n];
-    m->buf[m->len] = '\0';
-}
-static void msg_hex(msg *m, uint64_t v)
-{
-    static const char digits[] = "0123456789abcdef";
-    int shift;
-    msg_text(m, "0x");
-    for (shift = 60; shift >= 0; shift -= 4) {
-        if (m->len + 1 < m->cap) m->buf[m->len++] = digits[(v >> shift) & 0xFu];
-    }
-    m->buf[m->len] = '\0';
-}
+/* ---- error messages (text.h) ---------------------------------------------------------- */
+typedef pg__text msg;
 
 /* Fill *e (when not NULL) and return the message builder for details. */
 static msg set_error(pg_replay_error *e, size_t offset, const char *region, const char *field, int64_t frame,
                      int64_t command, const char *text)
 {
     msg m;
-    static char sink[2];
     if (e == NULL) {
-        m.buf = sink;
-        m.cap = sizeof sink;
+        m = pg__text_in(NULL, 0); /* nobody asked: the details go nowhere */
     } else {
         e->offset = offset;
         e->region = region;
         e->field = field;
         e->frame = frame;
         e->command = command;
-        m.buf = e->message;
-        m.cap = sizeof e->message;
+        m = pg__text_in(e->message, sizeof e->message);
     }
-    m.len = 0;
-    m.buf[0] = '\0';
-    msg_text(&m, text);
+    pg__text_put(&m, text);
     return m;
 }
 
@@ -104,10 +73,10 @@ static pg_result hash_error(pg_replay_error *e, size_t offset, const char *regio
                             const char *what, uint64_t stored, uint64_t computed)
 {
     msg m = set_error(e, offset, region, field, frame, -1, what);
-    msg_text(&m, ": stored ");
-    msg_hex(&m, stored);
-    msg_text(&m, ", computed ");
-    msg_hex(&m, computed);
+    pg__text_put(&m, ": stored ");
+    pg__text_hex(&m, stored);
+    pg__text_put(&m, ", computed ");
+    pg__text_hex(&m, computed);
     return PG_ERR_INVALID_ARGUMENT;
 }
 
@@ -115,8 +84,8 @@ static pg_result value_error(pg_replay_error *e, size_t offset, const char *regi
                              const char *what, uint64_t value, const char *tail)
 {
     msg m = set_error(e, offset, region, field, frame, -1, what);
-    msg_u64(&m, value);
-    msg_text(&m, tail);
+    pg__text_u64(&m, value);
+    pg__text_put(&m, tail);
     return PG_ERR_INVALID_ARGUMENT;
 }
 
@@ -124,10 +93,10 @@ static pg_result truncated(pg_replay_error *e, size_t size, const char *region, 
                            size_t need_end)
 {
     msg m = set_error(e, size, region, field, frame, -1, "file ends at byte ");
-    msg_u64(&m, size);
-    msg_text(&m, " inside this field (it needs ");
-    msg_u64(&m, need_end);
-    msg_text(&m, " bytes): the file is truncated");
+    pg__text_u64(&m, size);
+    pg__text_put(&m, " inside this field (it needs ");
+    pg__text_u64(&m, need_end);
+    pg__text_put(&m, " bytes): the file is truncated");
     return PG_ERR_INVALID_ARGUMENT;
 }
 
@@ -298,7 +267,7 @@ static pg_result check_scene(const pg_replay_info *info, pg_world_def *def, pg_r
     if (r != PG_OK) {
         size_t off = scene_error_offset(info, &se);
         msg m = set_error(e, info->scene_offset + off, "scene", "text", -1, -1, "scene text does not parse: ");
-        msg_text(&m, se.message);
+        pg__text_put(&m, se.message);
         return PG_ERR_INVALID_ARGUMENT;
     }
     return PG_OK;
@@ -369,10 +338,10 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     scene_size = get_u32(data + OFF_SCENE_SIZE);
     if (scene_size > records_end - OFF_SCENE_TEXT - 8u) {
         msg m = set_error(error, OFF_SCENE_SIZE, "header", "scene_size", -1, -1, "scene size ");
-        msg_u64(&m, scene_size);
-        msg_text(&m, " runs past the end of the file (at most ");
-        msg_u64(&m, records_end - OFF_SCENE_TEXT - 8u);
-        msg_text(&m, " bytes fit): the file is truncated or the size is corrupt");
+        pg__text_u64(&m, scene_size);
+        pg__text_put(&m, " runs past the end of the file (at most ");
+        pg__text_u64(&m, records_end - OFF_SCENE_TEXT - 8u);
+        pg__text_put(&m, " bytes fit): the file is truncated or the size is corrupt");
         return PG_ERR_INVALID_ARGUMENT;
     }
     in.scene_text = (const char *)(data + OFF_SCENE_TEXT);
@@ -383,13 +352,13 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     computed = hash_range(data, OFF_SCENE_TEXT, pos);
     if (stored != computed) {
         msg m = set_error(error, pos, "scene", "scene_hash", -1, -1, "scene hash mismatch (scene text, bytes ");
-        msg_u64(&m, OFF_SCENE_TEXT);
-        msg_text(&m, "..");
-        msg_u64(&m, pos - 1u);
-        msg_text(&m, "): stored ");
-        msg_hex(&m, stored);
-        msg_text(&m, ", computed ");
-        msg_hex(&m, computed);
+        pg__text_u64(&m, OFF_SCENE_TEXT);
+        pg__text_put(&m, "..");
+        pg__text_u64(&m, pos - 1u);
+        pg__text_put(&m, "): stored ");
+        pg__text_hex(&m, stored);
+        pg__text_put(&m, ", computed ");
+        pg__text_hex(&m, computed);
         return PG_ERR_INVALID_ARGUMENT;
     }
     pos += 8u;
@@ -405,10 +374,10 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
             /* the end record must start exactly at records_end */
             if (due) {
                 msg m = set_error(error, pos, "checkpoint", "tag", (int64_t)frame, -1, "checkpoint ");
-                msg_u64(&m, checkpoints);
-                msg_text(&m, " at frame ");
-                msg_u64(&m, frame);
-                msg_text(&m, " is missing: the end record follows");
+                pg__text_u64(&m, checkpoints);
+                pg__text_put(&m, " at frame ");
+                pg__text_u64(&m, frame);
+                pg__text_put(&m, " is missing: the end record follows");
                 return PG_ERR_INVALID_ARGUMENT;
             }
             break;
@@ -418,11 +387,11 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
             size_t cs = checkpoint_size(sections);
             if (tag != PG_REPLAY_TAG_CHECKPOINT) {
                 msg m = set_error(error, pos, "checkpoint", "tag", (int64_t)frame, -1, "expected checkpoint ");
-                msg_u64(&m, checkpoints);
-                msg_text(&m, " (tag 'C') at frame ");
-                msg_u64(&m, frame);
-                msg_text(&m, ", found byte ");
-                msg_u64(&m, tag);
+                pg__text_u64(&m, checkpoints);
+                pg__text_put(&m, " (tag 'C') at frame ");
+                pg__text_u64(&m, frame);
+                pg__text_put(&m, ", found byte ");
+                pg__text_u64(&m, tag);
                 return PG_ERR_INVALID_ARGUMENT;
             }
             if (records_end - pos < cs) return truncated(error, records_end, "checkpoint", "checkpoint", (int64_t)frame, pos + cs);
@@ -435,13 +404,13 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
             if (stored != computed) {
                 msg m = set_error(error, pos + cs - 8u, "checkpoint", "block_hash", (int64_t)frame, -1,
                                   "block hash mismatch (bytes ");
-                msg_u64(&m, block_start);
-                msg_text(&m, "..");
-                msg_u64(&m, pos + cs - 9u);
-                msg_text(&m, ", the records before this checkpoint): stored ");
-                msg_hex(&m, stored);
-                msg_text(&m, ", computed ");
-                msg_hex(&m, computed);
+                pg__text_u64(&m, block_start);
+                pg__text_put(&m, "..");
+                pg__text_u64(&m, pos + cs - 9u);
+                pg__text_put(&m, ", the records before this checkpoint): stored ");
+                pg__text_hex(&m, stored);
+                pg__text_put(&m, ", computed ");
+                pg__text_hex(&m, computed);
                 return PG_ERR_INVALID_ARGUMENT;
             }
             pos += cs;
@@ -452,7 +421,7 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
         if (tag == PG_REPLAY_TAG_END) break;
         if (tag != PG_REPLAY_TAG_FRAME) {
             msg m = set_error(error, pos, "frame", "tag", (int64_t)frame, -1, "expected a frame record (tag 'F') or the end record (tag 'E'), found byte ");
-            msg_u64(&m, tag);
+            pg__text_u64(&m, tag);
             return PG_ERR_INVALID_ARGUMENT;
         }
         if (frame == 0xFFFFFFFFu)
@@ -472,14 +441,14 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
                     if (eoff > records_end - pos) eoff = records_end - pos;
                     m = set_error(error, pos + eoff, "frame", efield != NULL ? efield : "command", (int64_t)frame,
                                   (int64_t)c, "command ");
-                    msg_u64(&m, c);
-                    msg_text(&m, " of ");
-                    msg_u64(&m, n);
-                    msg_text(&m, " in frame ");
-                    msg_u64(&m, frame);
-                    msg_text(&m, " does not decode (starts at byte ");
-                    msg_u64(&m, pos);
-                    msg_text(&m, pos + eoff >= records_end ? "; it runs into the end record: truncated?)"
+                    pg__text_u64(&m, c);
+                    pg__text_put(&m, " of ");
+                    pg__text_u64(&m, n);
+                    pg__text_put(&m, " in frame ");
+                    pg__text_u64(&m, frame);
+                    pg__text_put(&m, " does not decode (starts at byte ");
+                    pg__text_u64(&m, pos);
+                    pg__text_put(&m, pos + eoff >= records_end ? "; it runs into the end record: truncated?)"
                                                            : ")");
                     return PG_ERR_INVALID_ARGUMENT;
                 }
@@ -493,12 +462,12 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     }
     if (pos != records_end) {
         msg m = set_error(error, pos, "end", "tag", (int64_t)frame, -1, "the end record must be the last ");
-        msg_u64(&m, PG_REPLAY_TRAILER_SIZE);
-        msg_text(&m, " bytes of the file, but it starts at byte ");
-        msg_u64(&m, pos);
-        msg_text(&m, " of ");
-        msg_u64(&m, size);
-        msg_text(&m, pos < records_end ? " (trailing data or a corrupt record)" : " (truncated)");
+        pg__text_u64(&m, PG_REPLAY_TRAILER_SIZE);
+        pg__text_put(&m, " bytes of the file, but it starts at byte ");
+        pg__text_u64(&m, pos);
+        pg__text_put(&m, " of ");
+        pg__text_u64(&m, size);
+        pg__text_put(&m, pos < records_end ? " (trailing data or a corrupt record)" : " (truncated)");
         return PG_ERR_INVALID_ARGUMENT;
     }
     /* end record */
@@ -647,7 +616,7 @@ pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const
     r = pg_world_create(&def, memory, memory_size, &p->world);
     if (r != PG_OK) {
         msg m = set_error(error, info->scene_offset, "scene", "text", -1, -1, "cannot create the scene's world: ");
-        msg_text(&m, pg_result_name(r));
+        pg__text_put(&m, pg_result_name(r));
         p->world = NULL;
         return r == PG_ERR_MEMORY ? PG_ERR_MEMORY : PG_ERR_INVALID_ARGUMENT;
     }
@@ -655,7 +624,7 @@ pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const
     if (r != PG_OK) {
         size_t off = scene_error_offset(info, &se);
         msg m = set_error(error, info->scene_offset + off, "scene", "text", -1, -1, "scene does not load: ");
-        msg_text(&m, se.message);
+        pg__text_put(&m, se.message);
         p->world = NULL;
         return PG_ERR_INVALID_ARGUMENT;
     }
@@ -786,9 +755,9 @@ pg_result pg_replay_apply_frame(pg_world *world, const uint8_t *data, const pg_r
         m.buf = buf;
         m.cap = sizeof buf;
         m.len = 0;
-        msg_text(&m, "pg_replay_apply_frame: record_offset ");
-        msg_u64(&m, record_offset);
-        msg_text(&m, " is not a frame record's start (see pg_replay_frame_result.record_offset)");
+        pg__text_put(&m, "pg_replay_apply_frame: record_offset ");
+        pg__text_u64(&m, record_offset);
+        pg__text_put(&m, " is not a frame record's start (see pg_replay_frame_result.record_offset)");
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, buf);
     }
     apply_frame_at(world, data, info->end_offset, record_offset, applied, failures);

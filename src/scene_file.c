@@ -16,6 +16,7 @@
  *   the pools directly (world_internal.h): flags such as allow_sleep have no getter.
  */
 #include "pogon/scene_file.h"
+#include "text.h"
 #include "world_internal.h"
 
 /* ---- small text helpers ------------------------------------------------------------------ */
@@ -232,42 +233,8 @@ typedef struct scene_parser {
     uint32_t over_line, over_count;
 } scene_parser;
 
-/* ---- errors ------------------------------------------------------------------------------------ */
-typedef struct msg {
-    char *p;
-    size_t cap, len;
-} msg;
-
-static void msg_put(msg *m, const char *s)
-{
-    while (*s != '\0') {
-        if (m->len + 1u < m->cap) m->p[m->len++] = *s;
-        ++s;
-    }
-    m->p[m->len] = '\0';
-}
-
-static void msg_u64(msg *m, uint64_t v)
-{
-    char rev[24], one[2];
-    int n = 0;
-    do {
-        rev[n++] = (char)('0' + (int)(v % 10u));
-        v /= 10u;
-    } while (v != 0);
-    one[1] = '\0';
-    while (n > 0) {
-        one[0] = rev[--n];
-        msg_put(m, one);
-    }
-}
-
-static void msg_fix(msg *m, pg_fix v)
-{
-    char num[PG_FIX_FORMAT_MAX];
-    pg_fix_format(v, num, sizeof num);
-    msg_put(m, num);
-}
+/* ---- errors (messages: text.h) ----------------------------------------------------------- */
+typedef pg__text msg;
 
 /* 'token' (cut at 24 bytes) or "end of line". Tokens hold printable ASCII only. */
 static void msg_token(msg *m, const scene_parser *P, token t)
@@ -275,14 +242,14 @@ static void msg_token(msg *m, const scene_parser *P, token t)
     char buf[32];
     size_t i, n = t.len < 24u ? t.len : 24u;
     if (t.len == 0) {
-        msg_put(m, "end of line");
+        pg__text_put(m, "end of line");
         return;
     }
     buf[0] = '\'';
     for (i = 0; i < n; ++i) buf[1 + i] = P->text[t.start + i];
     buf[1 + n] = '\0';
-    msg_put(m, buf);
-    msg_put(m, t.len > n ? "...'" : "'");
+    pg__text_put(m, buf);
+    pg__text_put(m, t.len > n ? "...'" : "'");
 }
 
 static uint32_t sat_u32(size_t v) { return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v; }
@@ -302,16 +269,13 @@ static msg fail(scene_parser *P, pg_result r, uint32_t column)
     P->result = r;
     P->error->line = P->line;
     P->error->column = column;
-    m.p = P->error->message;
-    m.cap = sizeof P->error->message;
-    m.len = 0;
-    m.p[0] = '\0';
+    m = pg__text_in(P->error->message, sizeof P->error->message);
     if (P->line != 0) {
-        msg_put(&m, "line ");
-        msg_u64(&m, P->line);
-        msg_put(&m, ", column ");
-        msg_u64(&m, column);
-        msg_put(&m, ": ");
+        pg__text_put(&m, "line ");
+        pg__text_u64(&m, P->line);
+        pg__text_put(&m, ", column ");
+        pg__text_u64(&m, column);
+        pg__text_put(&m, ": ");
     }
     return m;
 }
@@ -320,19 +284,19 @@ static msg fail(scene_parser *P, pg_result r, uint32_t column)
 static pg_result fail_expected(scene_parser *P, token t, const char *what, const char *name, const char *part)
 {
     msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-    msg_put(&m, "expected ");
-    msg_put(&m, what);
+    pg__text_put(&m, "expected ");
+    pg__text_put(&m, what);
     if (name != NULL) {
-        msg_put(&m, " for '");
-        msg_put(&m, name);
-        msg_put(&m, "'");
+        pg__text_put(&m, " for '");
+        pg__text_put(&m, name);
+        pg__text_put(&m, "'");
     }
     if (part != NULL) {
-        msg_put(&m, " (");
-        msg_put(&m, part);
-        msg_put(&m, ")");
+        pg__text_put(&m, " (");
+        pg__text_put(&m, part);
+        pg__text_put(&m, ")");
     }
-    msg_put(&m, ", got ");
+    pg__text_put(&m, ", got ");
     msg_token(&m, P, t);
     return P->result;
 }
@@ -341,12 +305,12 @@ static pg_result fail_expected(scene_parser *P, token t, const char *what, const
 static pg_result fail_range(scene_parser *P, uint32_t column, const char *name, pg_fix value, const char *range)
 {
     msg m = fail(P, PG_ERR_ENVELOPE, column);
-    msg_put(&m, "'");
-    msg_put(&m, name);
-    msg_put(&m, "' is ");
-    msg_fix(&m, value);
-    msg_put(&m, ", outside ");
-    msg_put(&m, range);
+    pg__text_put(&m, "'");
+    pg__text_put(&m, name);
+    pg__text_put(&m, "' is ");
+    pg__text_fix(&m, value);
+    pg__text_put(&m, ", outside ");
+    pg__text_put(&m, range);
     return P->result;
 }
 
@@ -379,9 +343,9 @@ static int load_line(scene_parser *P)
             code[2] = hex[c >> 4];
             code[3] = hex[c & 15u];
             code[4] = '\0';
-            msg_put(&m, "unexpected byte ");
-            msg_put(&m, code);
-            msg_put(&m, ": a scene file is ASCII text (anything may follow a '#')");
+            pg__text_put(&m, "unexpected byte ");
+            pg__text_put(&m, code);
+            pg__text_put(&m, ": a scene file is ASCII text (anything may follow a '#')");
             return -1;
         }
     }
@@ -429,10 +393,10 @@ static pg_result expect_end_of_line(scene_parser *P, const char *after)
     msg m;
     if (t.len == 0) return PG_OK;
     m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-    msg_put(&m, "unexpected ");
+    pg__text_put(&m, "unexpected ");
     msg_token(&m, P, t);
-    msg_put(&m, " after ");
-    msg_put(&m, after);
+    pg__text_put(&m, " after ");
+    pg__text_put(&m, after);
     return P->result;
 }
 
@@ -447,11 +411,11 @@ static pg_result read_fix(scene_parser *P, const char *name, const char *part, p
     if (s == PG_FIX_SYNTAX) return fail_expected(P, t, "a number", name, part);
     if (s != PG_FIX_OK) {
         msg m = fail(P, PG_ERR_ENVELOPE, token_column(P, t));
-        msg_put(&m, "number out of range for '");
-        msg_put(&m, name);
-        msg_put(&m, "': ");
+        pg__text_put(&m, "number out of range for '");
+        pg__text_put(&m, name);
+        pg__text_put(&m, "': ");
         msg_token(&m, P, t);
-        msg_put(&m, " (Q16.16 holds -32767.99998..32767.99998)");
+        pg__text_put(&m, " (Q16.16 holds -32767.99998..32767.99998)");
         return P->result;
     }
     return PG_OK;
@@ -482,13 +446,13 @@ static pg_result read_uint(scene_parser *P, const char *name, uint64_t max, uint
     }
     if (overflow || v > max) {
         msg m = fail(P, PG_ERR_ENVELOPE, token_column(P, t));
-        msg_put(&m, "integer out of range for '");
-        msg_put(&m, name);
-        msg_put(&m, "': ");
+        pg__text_put(&m, "integer out of range for '");
+        pg__text_put(&m, name);
+        pg__text_put(&m, "': ");
         msg_token(&m, P, t);
-        msg_put(&m, " (at most ");
-        msg_u64(&m, max);
-        msg_put(&m, ")");
+        pg__text_put(&m, " (at most ");
+        pg__text_u64(&m, max);
+        pg__text_put(&m, ")");
         return P->result;
     }
     *out = v;
@@ -503,14 +467,14 @@ static pg_result read_u32(scene_parser *P, const char *name, uint32_t lo, uint32
     if (r != PG_OK) return r;
     if (v < lo || v > hi) {
         msg m = fail(P, PG_ERR_ENVELOPE, column);
-        msg_put(&m, "'");
-        msg_put(&m, name);
-        msg_put(&m, "' is ");
-        msg_u64(&m, v);
-        msg_put(&m, ", outside ");
-        msg_u64(&m, lo);
-        msg_put(&m, "..");
-        msg_u64(&m, hi);
+        pg__text_put(&m, "'");
+        pg__text_put(&m, name);
+        pg__text_put(&m, "' is ");
+        pg__text_u64(&m, v);
+        pg__text_put(&m, ", outside ");
+        pg__text_u64(&m, lo);
+        pg__text_put(&m, "..");
+        pg__text_u64(&m, hi);
         return P->result;
     }
     *out = (uint32_t)v;
@@ -574,7 +538,7 @@ static pg_result read_effects(scene_parser *P, uint32_t *out)
         if (r != PG_OK) return r;
         if ((v & ~(uint64_t)PG_EFFECTS_ALL) != 0) {
             msg m = fail(P, PG_ERR_ENVELOPE, column);
-            msg_put(&m, "'effects' has bits outside 0x7f (gravity 0x1 .. continuous 0x40)");
+            pg__text_put(&m, "'effects' has bits outside 0x7f (gravity 0x1 .. continuous 0x40)");
             return P->result;
         }
         *out = (uint32_t)v;
@@ -712,28 +676,28 @@ static pg_result read_props(scene_parser *P, unsigned ctx, props *pr, const char
         info = find_prop(P, t);
         if (info == NULL) {
             msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-            msg_put(&m, "expected a property of ");
-            msg_put(&m, what);
-            msg_put(&m, ", got ");
+            pg__text_put(&m, "expected a property of ");
+            pg__text_put(&m, what);
+            pg__text_put(&m, ", got ");
             msg_token(&m, P, t);
             return P->result;
         }
         if ((info->ctx & ctx) == 0) {
             msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-            msg_put(&m, "'");
-            msg_put(&m, info->name);
-            msg_put(&m, "' does not apply to ");
-            msg_put(&m, what);
+            pg__text_put(&m, "'");
+            pg__text_put(&m, info->name);
+            pg__text_put(&m, "' does not apply to ");
+            pg__text_put(&m, what);
             return P->result;
         }
         bit = (uint64_t)1 << info->slot;
         if (pr == NULL) {
             if ((P->settings_seen & bit) != 0) {
                 msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-                msg_put(&m, "'");
-                msg_put(&m, info->name);
-                msg_put(&m, "' is already set on line ");
-                msg_u64(&m, P->setting_line[info->slot]);
+                pg__text_put(&m, "'");
+                pg__text_put(&m, info->name);
+                pg__text_put(&m, "' is already set on line ");
+                pg__text_u64(&m, P->setting_line[info->slot]);
                 return P->result;
             }
             P->settings_seen |= bit;
@@ -743,10 +707,10 @@ static pg_result read_props(scene_parser *P, unsigned ctx, props *pr, const char
         } else {
             if ((pr->seen & bit) != 0) {
                 msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-                msg_put(&m, "'");
-                msg_put(&m, info->name);
-                msg_put(&m, "' is given twice for ");
-                msg_put(&m, what);
+                pg__text_put(&m, "'");
+                pg__text_put(&m, info->name);
+                pg__text_put(&m, "' is given twice for ");
+                pg__text_put(&m, what);
                 return P->result;
             }
             pr->seen |= bit;
@@ -772,7 +736,7 @@ static pg_result check_body_props(scene_parser *P, const props *pr)
     const pg_body_def *bd = &pr->bd;
     if (bd->type == PG_BODY_STATIC && (pr->seen & (((uint64_t)1 << P_LINEAR_VELOCITY) | ((uint64_t)1 << P_ANGULAR_VELOCITY))) != 0) {
         msg m = fail_prop(P, PG_ERR_BODY_TYPE, pr, (pr->seen & ((uint64_t)1 << P_LINEAR_VELOCITY)) != 0 ? P_LINEAR_VELOCITY : P_ANGULAR_VELOCITY);
-        msg_put(&m, "a static body has no velocity");
+        pg__text_put(&m, "a static body has no velocity");
         return P->result;
     }
     {
@@ -780,10 +744,10 @@ static pg_result check_body_props(scene_parser *P, const props *pr)
         int64_t s2 = (int64_t)bd->linear_velocity.x * bd->linear_velocity.x + (int64_t)bd->linear_velocity.y * bd->linear_velocity.y;
         if (s2 > cap * cap) {
             msg m = fail_prop(P, PG_ERR_ENVELOPE, pr, P_LINEAR_VELOCITY);
-            msg_put(&m, "'linear_velocity' has speed ");
-            msg_fix(&m, pg_v2_length(bd->linear_velocity));
-            msg_put(&m, " m/s, above max_linear_speed ");
-            msg_fix(&m, P->def.max_linear_speed);
+            pg__text_put(&m, "'linear_velocity' has speed ");
+            pg__text_fix(&m, pg_v2_length(bd->linear_velocity));
+            pg__text_put(&m, " m/s, above max_linear_speed ");
+            pg__text_fix(&m, P->def.max_linear_speed);
             return P->result;
         }
     }
@@ -802,13 +766,13 @@ static pg_result check_density(scene_parser *P, const props *pr, pg_body_type ty
 static pg_result fail_geometry(scene_parser *P, pg_result r, uint32_t column, const char *kind)
 {
     msg m = fail(P, r, column);
-    msg_put(&m, "the ");
-    msg_put(&m, kind);
+    pg__text_put(&m, "the ");
+    pg__text_put(&m, kind);
     switch (r) {
-    case PG_ERR_DEGENERATE: msg_put(&m, " is degenerate: no area or length, or repeated or collinear points"); break;
-    case PG_ERR_NOT_CONVEX: msg_put(&m, " is not convex (list the vertices of a convex polygon, either winding)"); break;
-    case PG_ERR_ENVELOPE: msg_put(&m, " is outside the envelope: sizes 0.025..50 m, vertices within 50 m of the body"); break;
-    default: msg_put(&m, " is invalid: "); msg_put(&m, pg_result_message(r)); break;
+    case PG_ERR_DEGENERATE: pg__text_put(&m, " is degenerate: no area or length, or repeated or collinear points"); break;
+    case PG_ERR_NOT_CONVEX: pg__text_put(&m, " is not convex (list the vertices of a convex polygon, either winding)"); break;
+    case PG_ERR_ENVELOPE: pg__text_put(&m, " is outside the envelope: sizes 0.025..50 m, vertices within 50 m of the body"); break;
+    default: pg__text_put(&m, " is invalid: "); pg__text_put(&m, pg_result_message(r)); break;
     }
     return P->result;
 }
@@ -853,9 +817,9 @@ static void apply_awake(pg_world *world, pg_body_id id, int awake)
 static pg_result fail_world(scene_parser *P, const char *doing)
 {
     msg m = fail(P, P->result, 1);
-    msg_put(&m, doing);
-    msg_put(&m, ": ");
-    msg_put(&m, pg_world_last_error(P->world));
+    pg__text_put(&m, doing);
+    pg__text_put(&m, ": ");
+    pg__text_put(&m, pg_world_last_error(P->world));
     return P->result;
 }
 
@@ -872,24 +836,24 @@ static pg_result count_objects(scene_parser *P, uint32_t bodies, uint32_t shapes
     }
     if (P->mode == MODE_READ && (P->settings_seen & ((uint64_t)1 << P_MAX_BODIES)) != 0 && P->bodies > P->def.max_bodies) {
         msg m = fail(P, PG_ERR_CAPACITY, 1);
-        msg_put(&m, "body ");
-        msg_u64(&m, P->bodies);
-        msg_put(&m, " is beyond max_bodies ");
-        msg_u64(&m, P->def.max_bodies);
-        msg_put(&m, " (line ");
-        msg_u64(&m, P->setting_line[P_MAX_BODIES]);
-        msg_put(&m, ")");
+        pg__text_put(&m, "body ");
+        pg__text_u64(&m, P->bodies);
+        pg__text_put(&m, " is beyond max_bodies ");
+        pg__text_u64(&m, P->def.max_bodies);
+        pg__text_put(&m, " (line ");
+        pg__text_u64(&m, P->setting_line[P_MAX_BODIES]);
+        pg__text_put(&m, ")");
         return P->result;
     }
     if (P->mode == MODE_READ && (P->settings_seen & ((uint64_t)1 << P_MAX_SHAPES)) != 0 && P->shapes > P->def.max_shapes) {
         msg m = fail(P, PG_ERR_CAPACITY, 1);
-        msg_put(&m, "shape ");
-        msg_u64(&m, P->shapes);
-        msg_put(&m, " is beyond max_shapes ");
-        msg_u64(&m, P->def.max_shapes);
-        msg_put(&m, " (line ");
-        msg_u64(&m, P->setting_line[P_MAX_SHAPES]);
-        msg_put(&m, ")");
+        pg__text_put(&m, "shape ");
+        pg__text_u64(&m, P->shapes);
+        pg__text_put(&m, " is beyond max_shapes ");
+        pg__text_u64(&m, P->def.max_shapes);
+        pg__text_put(&m, " (line ");
+        pg__text_u64(&m, P->setting_line[P_MAX_SHAPES]);
+        pg__text_put(&m, ")");
         return P->result;
     }
     return PG_OK;
@@ -914,10 +878,10 @@ static const char *mass_problem(scene_parser *P, uint32_t n, const pg_geometry *
 static pg_result fail_mass(scene_parser *P, uint32_t column, const char *kind, const char *why)
 {
     msg m = fail(P, PG_ERR_ENVELOPE, column);
-    msg_put(&m, "cannot make the ");
-    msg_put(&m, kind);
-    msg_put(&m, ": ");
-    msg_put(&m, why);
+    pg__text_put(&m, "cannot make the ");
+    pg__text_put(&m, kind);
+    pg__text_put(&m, ": ");
+    pg__text_put(&m, why);
     return P->result;
 }
 
@@ -942,7 +906,7 @@ static pg_result parse_make(scene_parser *P, int kind, token keyword)
     if (r != PG_OK) return r;
     if (kind == 5 && pr.bd.type != PG_BODY_STATIC) {
         msg m = fail(P, PG_ERR_BODY_TYPE, pr.column[P_TYPE]);
-        msg_put(&m, "a wall is always static");
+        pg__text_put(&m, "a wall is always static");
         return P->result;
     }
     pr.bd.angle = pr.angle;
@@ -1058,7 +1022,7 @@ static pg_result parse_shape(scene_parser *P)
         while (r == PG_OK && looks_numeric(P, peek_token(P))) {
             if (count == PG_MAX_VERTICES) {
                 msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, peek_token(P)));
-                msg_put(&m, "a polygon has at most 8 vertices; this is vertex 9");
+                pg__text_put(&m, "a polygon has at most 8 vertices; this is vertex 9");
                 return P->result;
             }
             r = read_fix(P, "polygon", parts[count][0], &v[count].x, NULL);
@@ -1067,8 +1031,8 @@ static pg_result parse_shape(scene_parser *P)
         }
         if (r == PG_OK && count < 3) {
             msg m = fail(P, PG_ERR_INVALID_ARGUMENT, kind_column);
-            msg_put(&m, "a polygon needs 3 to 8 vertices (x y pairs), got ");
-            msg_u64(&m, (uint64_t)count);
+            pg__text_put(&m, "a polygon needs 3 to 8 vertices (x y pairs), got ");
+            pg__text_u64(&m, (uint64_t)count);
             return P->result;
         }
         break;
@@ -1088,9 +1052,9 @@ static pg_result parse_shape(scene_parser *P)
     if (r != PG_OK) return fail_geometry(P, r, kind_column, kinds[kind]);
     if (P->body_shapes >= 64) {
         msg m = fail(P, PG_ERR_CAPACITY, 1);
-        msg_put(&m, "a body has at most 64 shapes (body of line ");
-        msg_u64(&m, P->body_line);
-        msg_put(&m, ")");
+        pg__text_put(&m, "a body has at most 64 shapes (body of line ");
+        pg__text_u64(&m, P->body_line);
+        pg__text_put(&m, ")");
         return P->result;
     }
     r = make_open_body(P);
@@ -1099,12 +1063,12 @@ static pg_result parse_shape(scene_parser *P)
         const char *why = mass_problem(P, P->body_shapes, &g, pr.sd.density, !P->body.bd.fixed_rotation);
         if (why != NULL) {
             msg m = fail(P, PG_ERR_ENVELOPE, kind_column);
-            msg_put(&m, "cannot add the ");
-            msg_put(&m, kinds[kind]);
-            msg_put(&m, " to the body of line ");
-            msg_u64(&m, P->body_line);
-            msg_put(&m, ": ");
-            msg_put(&m, why);
+            pg__text_put(&m, "cannot add the ");
+            pg__text_put(&m, kinds[kind]);
+            pg__text_put(&m, " to the body of line ");
+            pg__text_u64(&m, P->body_line);
+            pg__text_put(&m, ": ");
+            pg__text_put(&m, why);
             return P->result;
         }
     }
@@ -1147,9 +1111,9 @@ static pg_result parse_header(scene_parser *P)
     if (token_is(P, version, "1")) return expect_end_of_line(P, "the version line");
     if (version.len != 0 && P->text[version.start] >= '0' && P->text[version.start] <= '9') {
         m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, version));
-        msg_put(&m, "unsupported version ");
+        pg__text_put(&m, "unsupported version ");
         msg_token(&m, P, version);
-        msg_put(&m, ": this reader knows version 1");
+        pg__text_put(&m, ": this reader knows version 1");
         return P->result;
     }
     return fail_expected(P, version, "the format version (1) after 'pogon-scene'", NULL, NULL);
@@ -1176,7 +1140,7 @@ static pg_result parse_statement(scene_parser *P, token t)
         if (info != NULL && (info->ctx & CTX_BODY) != 0) {
             if (P->body_shapes > 0) {
                 m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-                msg_put(&m, "body properties must come before the body's shapes");
+                pg__text_put(&m, "body properties must come before the body's shapes");
                 return P->result;
             }
             P->at = t.start;
@@ -1184,9 +1148,9 @@ static pg_result parse_statement(scene_parser *P, token t)
         }
         if (token_is(P, t, "body") || make_kind_of(P, t) >= 0) {
             m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-            msg_put(&m, "expected 'end' to close the body of line ");
-            msg_u64(&m, P->body_line);
-            msg_put(&m, " before ");
+            pg__text_put(&m, "expected 'end' to close the body of line ");
+            pg__text_u64(&m, P->body_line);
+            pg__text_put(&m, " before ");
             msg_token(&m, P, t);
             return P->result;
         }
@@ -1195,7 +1159,7 @@ static pg_result parse_statement(scene_parser *P, token t)
     if (info != NULL && (info->ctx & CTX_SETTING) != 0) {
         if (P->bodies_started) {
             m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-            msg_put(&m, "world settings must come before the first body");
+            pg__text_put(&m, "world settings must come before the first body");
             return P->result;
         }
         P->at = t.start;
@@ -1212,14 +1176,14 @@ static pg_result parse_statement(scene_parser *P, token t)
     if (token_is(P, t, "end") || token_is(P, t, "shape")) {
         m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
         msg_token(&m, P, t);
-        msg_put(&m, " outside a body: open one with 'body TYPE'");
+        pg__text_put(&m, " outside a body: open one with 'body TYPE'");
         return P->result;
     }
     if (info != NULL) {
         m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
-        msg_put(&m, "'");
-        msg_put(&m, info->name);
-        msg_put(&m, "' outside a body: put it inside 'body' ... 'end' or on a ready-made line");
+        pg__text_put(&m, "'");
+        pg__text_put(&m, info->name);
+        pg__text_put(&m, "' outside a body: put it inside 'body' ... 'end' or on a ready-made line");
         return P->result;
     }
     return fail_expected(P, t, "a setting, 'body' or a ready-made kind (ball capsule box triangle star wall)", NULL, NULL);
@@ -1253,9 +1217,9 @@ static pg_result run(scene_parser *P)
     }
     if (P->in_body) {
         msg m = fail(P, PG_ERR_INVALID_ARGUMENT, column_at(P, P->last_end));
-        msg_put(&m, "expected 'end' to close the body of line ");
-        msg_u64(&m, P->body_line);
-        msg_put(&m, ", got end of file");
+        pg__text_put(&m, "expected 'end' to close the body of line ");
+        pg__text_u64(&m, P->body_line);
+        pg__text_put(&m, ", got end of file");
         return P->result;
     }
     return PG_OK;
@@ -1284,12 +1248,9 @@ static pg_result fail_null(pg_scene_error *error, const char *what)
         msg m;
         error->line = 0;
         error->column = 0;
-        m.p = error->message;
-        m.cap = sizeof error->message;
-        m.len = 0;
-        m.p[0] = '\0';
-        msg_put(&m, what);
-        msg_put(&m, " is NULL");
+        m = pg__text_in(error->message, sizeof error->message);
+        pg__text_put(&m, what);
+        pg__text_put(&m, " is NULL");
     }
     return PG_ERR_NULL;
 }
@@ -1357,10 +1318,10 @@ pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_sce
         int given = (P.settings_seen & bit) != 0;
         P.line = given ? P.setting_line[which] : 1u;
         m = fail(&P, PG_ERR_INVALID_ARGUMENT, given ? P.setting_column[which] : 1u);
-        msg_put(&m, "the world's ");
-        msg_put(&m, prop_name(which));
-        msg_put(&m, given ? " differs from the scene's" : " differs from the default the scene uses");
-        msg_put(&m, ": create the world from pg_scene_read_def's def");
+        pg__text_put(&m, "the world's ");
+        pg__text_put(&m, prop_name(which));
+        pg__text_put(&m, given ? " differs from the scene's" : " differs from the default the scene uses");
+        pg__text_put(&m, ": create the world from pg_scene_read_def's def");
         return P.result;
     }
     if (P.over_kind != 0) { /* no room: refused before anything is made */
@@ -1368,14 +1329,14 @@ pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_sce
         int bodies = P.over_kind == 1;
         P.line = P.over_line;
         m = fail(&P, PG_ERR_CAPACITY, 1);
-        msg_put(&m, bodies ? "body " : "shape ");
-        msg_u64(&m, P.over_count);
-        msg_put(&m, " of the scene does not fit: the world has ");
-        msg_u64(&m, bodies ? P.room_bodies : P.room_shapes);
-        msg_put(&m, bodies ? " free body slots of max_bodies " : " free shape slots of max_shapes ");
-        msg_u64(&m, bodies ? wd.max_bodies : wd.max_shapes);
-        msg_put(&m, ", the scene needs ");
-        msg_u64(&m, bodies ? P.bodies : P.shapes);
+        pg__text_put(&m, bodies ? "body " : "shape ");
+        pg__text_u64(&m, P.over_count);
+        pg__text_put(&m, " of the scene does not fit: the world has ");
+        pg__text_u64(&m, bodies ? P.room_bodies : P.room_shapes);
+        pg__text_put(&m, bodies ? " free body slots of max_bodies " : " free shape slots of max_shapes ");
+        pg__text_u64(&m, bodies ? wd.max_bodies : wd.max_shapes);
+        pg__text_put(&m, ", the scene needs ");
+        pg__text_u64(&m, bodies ? P.bodies : P.shapes);
         return P.result;
     }
     parser_init(&P, text, length, error, world);

@@ -15,6 +15,7 @@
  */
 #include "pogon/replay.h"
 #include "wide.h"
+#include "text.h"
 #include "world_internal.h"
 
 #define SNAPSHOT_MAGIC 0x4E534750u /* "PGSN" */
@@ -758,17 +759,12 @@ pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_
     r.shape_mark = world->proxy_flags_compact;
     decode(&r, NULL, &world->def); /* validate everything first */
     if (r.error_field != NULL) {
-        char detail[134], num[24]; /* what last_error holds after "PG_ERR_INVALID_ARGUMENT: " */
-        size_t pos = 0, k = 0, off = r.error_offset;
-        const char *t = "corrupt snapshot at offset ";
-        do { num[k++] = (char)('0' + (int)(off % 10u)); off /= 10u; } while (off != 0 && k < sizeof num);
-        while (*t != '\0' && pos + 1 < sizeof detail) detail[pos++] = *t++;
-        while (k > 0 && pos + 1 < sizeof detail) detail[pos++] = num[--k];
-        t = ", field ";
-        while (*t != '\0' && pos + 1 < sizeof detail) detail[pos++] = *t++;
-        t = r.error_field;
-        while (*t != '\0' && pos + 1 < sizeof detail) detail[pos++] = *t++;
-        detail[pos] = '\0';
+        char detail[134]; /* what last_error holds after "PG_ERR_INVALID_ARGUMENT: " */
+        pg__text t = pg__text_in(detail, sizeof detail);
+        pg__text_put(&t, "corrupt snapshot at offset ");
+        pg__text_u64(&t, r.error_offset);
+        pg__text_put(&t, ", field ");
+        pg__text_put(&t, r.error_field);
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, detail);
     }
     r.pos = 0;

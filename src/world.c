@@ -1,4 +1,5 @@
 /* world.c — world creation inside caller memory, the step's order, results and events. */
+#include "text.h"
 #include "world_internal.h"
 
 /* ---- results -------------------------------------------------------------------- */
@@ -29,22 +30,16 @@ const char *pg_result_message(pg_result r)
     return (unsigned)r < PG_RESULT_COUNT ? result_messages[r] : "unknown result code";
 }
 
-static void copy_text(char *dst, size_t cap, size_t *pos, const char *src)
-{
-    while (*src != '\0' && *pos + 1 < cap) dst[(*pos)++] = *src++;
-    dst[*pos] = '\0';
-}
-
 pg_result pg__fail(const pg_world *world, pg_result r, const char *detail)
 {
     if (world != NULL) {
         /* last_error is diagnostic scratch, not simulation state: writing it through a
          * const world is the one exception to "failing calls change nothing". */
         pg_world *w = (pg_world *)(uintptr_t)world;
-        size_t pos = 0;
-        copy_text(w->last_error, sizeof w->last_error, &pos, result_names[r]);
-        copy_text(w->last_error, sizeof w->last_error, &pos, ": ");
-        copy_text(w->last_error, sizeof w->last_error, &pos, detail);
+        pg__text t = pg__text_in(w->last_error, sizeof w->last_error);
+        pg__text_put(&t, result_names[r]);
+        pg__text_put(&t, ": ");
+        pg__text_put(&t, detail);
     }
     return r;
 }
@@ -52,15 +47,12 @@ pg_result pg__fail(const pg_world *world, pg_result r, const char *detail)
 /* "before VALUE after" into buf */
 static void join_value(char *buf, size_t cap, const char *before, pg_fix value, const char *after)
 {
-    char num[PG_FIX_FORMAT_MAX];
-    size_t pos = 0;
-    pg_fix_format(value, num, sizeof num);
-    buf[0] = '\0';
-    copy_text(buf, cap, &pos, before);
-    copy_text(buf, cap, &pos, " ");
-    copy_text(buf, cap, &pos, num);
-    copy_text(buf, cap, &pos, " ");
-    copy_text(buf, cap, &pos, after);
+    pg__text t = pg__text_in(buf, cap);
+    pg__text_put(&t, before);
+    pg__text_put(&t, " ");
+    pg__text_fix(&t, value);
+    pg__text_put(&t, " ");
+    pg__text_put(&t, after);
 }
 
 pg_result pg__fail_value(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *bound)
