@@ -521,27 +521,25 @@ PG__INLINE_ROW int64_t normal_update(const softness *soft, const constraint_poin
     return (int64_t)p->normal_impulse - mass_scale_times(soft->mass_scale, y) - pg__round_shift64((int64_t)soft->impulse_scale * p->normal_impulse, 30);
 }
 
-/* Store a normal row's new lambda acc (clamped to [0, LAMBDA_MAX]) and apply the change.
- * Returns whether anything changed. */
-PG__INLINE_ROW int normal_apply(const constraint *c, velocity *va, velocity *vb, constraint_point *p, int64_t acc)
+/* Store a normal row's new lambda acc (clamped to [0, LAMBDA_MAX]) and apply the change. */
+PG__INLINE_ROW void normal_apply(const constraint *c, velocity *va, velocity *vb, constraint_point *p, int64_t acc)
 {
     acc = clamp_lambda(acc, 0, LAMBDA_MAX);
     if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
-    if (acc == p->normal_impulse) return 0; /* a quarter of the pyramid's rows: open gaps */
+    if (acc == p->normal_impulse) return; /* nothing held, nothing to hold: open gaps */
     if (c->normal_linear) apply_linear(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
     else apply_row(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
     p->normal_impulse = (pg_fix)acc;
-    return 1;
 }
 
 /* One normal row at separation s with relative normal speed rel (measured from va, vb
- * as they are now). Returns whether it changed the velocities. */
-PG__INLINE_PASS int solve_normal(const step_context *ctx, const softness *soft, const constraint *c, velocity *va, velocity *vb,
+ * as they are now). */
+PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft, const constraint *c, velocity *va, velocity *vb,
                                  constraint_point *p, int64_t s, int64_t rel, int use_bias)
 {
     int is_soft;
     int64_t b = normal_target(ctx, soft, s, rel, use_bias, &is_soft);
-    return normal_apply(c, va, vb, p, normal_update(soft, p, b, is_soft));
+    normal_apply(c, va, vb, p, normal_update(soft, p, b, is_soft));
 }
 
 /* y = E^-1 b for the pair's coupling E = [1 e01; e10 1]; |b0|, |b1| < 2^32, so
@@ -609,15 +607,8 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
             s0 = s1;
             s1 = ss;
         }
-        if (c->block) {
-            int64_t rel0 = normal_speed(c, &va, &vb, first), rel1 = normal_speed(c, &va, &vb, second);
-            if (!solve_normal_pair(ctx, soft, c, &va, &vb, first, second, s0, s1, rel0, rel1, use_bias, order)) {
-                /* one after the other; the second row's speed is measured again only if
-                 * the first changed it */
-                if (solve_normal(ctx, soft, c, &va, &vb, first, s0, rel0, use_bias)) rel1 = normal_speed(c, &va, &vb, second);
-                solve_normal(ctx, soft, c, &va, &vb, second, s1, rel1, use_bias);
-            }
-        } else {
+        if (!c->block || !solve_normal_pair(ctx, soft, c, &va, &vb, first, second, s0, s1, normal_speed(c, &va, &vb, first),
+                                             normal_speed(c, &va, &vb, second), use_bias, order)) {
             /* one after the other, alternating which goes first (see SYMMETRY above) */
             solve_normal(ctx, soft, c, &va, &vb, first, s0, normal_speed(c, &va, &vb, first), use_bias);
             solve_normal(ctx, soft, c, &va, &vb, second, s1, normal_speed(c, &va, &vb, second), use_bias);
@@ -656,44 +647,47 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
  * the contact pushed during the step. */
 static inline int bounces(const constraint_point *p, pg_fix threshold) { return p->relative_velocity <= -threshold && p->max_normal_impulse != 0; }
 
+/* What the rebound row drives to 0: the relative normal speed now plus e times the
+ * approach speed at the step's start. */
+static inline int64_t rebound_target(const constraint *c, const velocity *va, const velocity *vb, const constraint_point *p)
+{
+    return relative_speed(va, vb, c->n, p->cnA, p->cnB) + pg_fix_mul(c->restitution, p->relative_velocity);
+}
+
+static inline void rebound_apply(velocity *va, velocity *vb, constraint_point *p, int64_t acc)
+{
+    acc = clamp_lambda(acc, 0, LAMBDA_MAX);
+    apply_row(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+    p->normal_impulse = (pg_fix)acc;
+}
+
 static void restitution(constraint *c, solver_body *bodies, pg_fix threshold)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     velocity va = load_velocity(A), vb = load_velocity(B);
     int32_t k;
+    int done = 0;
     if (c->restitution == 0) return;
     if (c->block && bounces(&c->p[0], threshold) && bounces(&c->p[1], threshold)) {
         /* both points bounce: together, as the rows were solved (BLOCK), or the first
          * point takes the whole rebound and a box landing flat leaves spinning */
         constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
-        int64_t b0 = relative_speed(&va, &vb, c->n, p0->cnA, p0->cnB) + pg_fix_mul(c->restitution, p0->relative_velocity);
-        int64_t b1 = relative_speed(&va, &vb, c->n, p1->cnA, p1->cnB) + pg_fix_mul(c->restitution, p1->relative_velocity);
+        int64_t b0 = rebound_target(c, &va, &vb, p0), b1 = rebound_target(c, &va, &vb, p1);
         if (block_targets_fit(b0, b1)) {
             int64_t y0, y1, acc0, acc1;
             block_inverse(c, c->e01, c->e10, b0, b1, &y0, &y1);
             acc0 = (int64_t)p0->normal_impulse - y0;
             acc1 = (int64_t)p1->normal_impulse - y1;
             if (acc0 >= 0 && acc1 >= 0) {
-                acc0 = clamp_lambda(acc0, 0, LAMBDA_MAX);
-                acc1 = clamp_lambda(acc1, 0, LAMBDA_MAX);
-                apply_row(&va, &vb, acc0 - p0->normal_impulse, p0->lnA_x, p0->lnA_y, p0->lnB_x, p0->lnB_y, p0->gnA, p0->gnB);
-                apply_row(&va, &vb, acc1 - p1->normal_impulse, p1->lnA_x, p1->lnA_y, p1->lnB_x, p1->lnB_y, p1->gnA, p1->gnB);
-                p0->normal_impulse = (pg_fix)acc0;
-                p1->normal_impulse = (pg_fix)acc1;
-                store_velocity(A, &va);
-                store_velocity(B, &vb);
-                return;
+                rebound_apply(&va, &vb, p0, acc0);
+                rebound_apply(&va, &vb, p1, acc1);
+                done = 1;
             }
         }
     }
-    for (k = 0; k < c->count; ++k) {
+    for (k = 0; !done && k < c->count; ++k) {
         constraint_point *p = &c->p[k];
-        int64_t acc;
-        if (!bounces(p, threshold)) continue;
-        acc = (int64_t)p->normal_impulse - (relative_speed(&va, &vb, c->n, p->cnA, p->cnB) + pg_fix_mul(c->restitution, p->relative_velocity));
-        acc = clamp_lambda(acc, 0, LAMBDA_MAX);
-        apply_row(&va, &vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
-        p->normal_impulse = (pg_fix)acc;
+        if (bounces(p, threshold)) rebound_apply(&va, &vb, p, (int64_t)p->normal_impulse - rebound_target(c, &va, &vb, p));
     }
     store_velocity(A, &va);
     store_velocity(B, &vb);
