@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "pogon/fixed.h"
+#include "wide.h" /* pg__mag64 */
 
 typedef struct pg__text { char *buf; size_t cap, len; } pg__text;
 
@@ -50,15 +51,11 @@ static inline void pg__text_u64(pg__text *t, uint64_t v)
     while (n > 0) pg__text_char(t, digits[--n]);
 }
 
-/* INT64_MIN included: its magnitude is formed in unsigned arithmetic. */
+/* INT64_MIN included (pg__mag64). */
 static inline void pg__text_i64(pg__text *t, int64_t v)
 {
-    if (v < 0) {
-        pg__text_char(t, '-');
-        pg__text_u64(t, (uint64_t)(-(v + 1)) + 1u);
-    } else {
-        pg__text_u64(t, (uint64_t)v);
-    }
+    if (v < 0) pg__text_char(t, '-');
+    pg__text_u64(t, pg__mag64(v));
 }
 
 /* 0x and 16 lowercase hex digits. */
