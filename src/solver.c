@@ -41,6 +41,16 @@
  * the substeps does the same where both points bounce (a box landing flat with
  * restitution 1 left its first bounce spinning at 11.7 rad/s).
  *
+ * LAZY ROWS: a contact that holds no impulse at the step's start (boxes side by side in
+ * a pyramid's row, a ball's speculative contact ahead of it: a fifth of the pyramid's
+ * and a sixth of rain's) gets its anchors and lever arms at once, but its rows'
+ * coefficients (two divisions and a dozen wide products a point) only when a pass first
+ * finds a point whose normal row wants something: target b < 0. Until then every row of
+ * it would leave lambda at 0 (a rigid or soft update of b >= 0 from 0 clamps at 0, and
+ * so does the block), friction is bounded by 0 and nothing bounces, so skipping it
+ * changes no bit; the coefficients are a function of the step's start whenever they are
+ * computed.
+ *
  * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
  * 1, odd ones 1 then 0); the block is the same in either order; and all rounding is
  * symmetric in sign, so a symmetric column gets no sideways push from the solver's
@@ -115,6 +125,9 @@ typedef struct constraint {
     int32_t e01, e10;        /* Q2.30: what a unit of lambda on point 1 does to point 0's
                                 normal speed, and the other way; |e| <= 1 */
     int32_t inv_det;         /* Q8.24: 1 / (1 - e01 e10), at most 16 */
+    int32_t rows_ready;      /* the rows' coefficients, friction ratios and the block are set
+                                (LAZY ROWS, in prepare_constraints) */
+    pg_fix friction;         /* the contact's, for the friction ratio */
     constraint_point p[2];
 } constraint;
 
@@ -254,9 +267,11 @@ PG__NOINLINE denominator row_coefficients_scaled(const pg_body *A, const pg_body
  * 0.025 m and density 0.1 (invI = 1.6e7) at a lever arm of 1.44 m, which a massless
  * segment on the same body provides (the envelope allows 50 m). Such a row is computed
  * with every term scaled down (row_coefficients_scaled); a row whose K fits int64 is
- * computed as before. */
-static denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation,
-                                    int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
+ * computed as before. Forced inline into prepare_rows, its only caller: gcc left it out
+ * of line, and writing its six results through pointers cost 1.8 % of the awake
+ * pyramid's instructions (callgrind). */
+PG__INLINE_ROW denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation,
+                                            int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
 {
     int64_t K = A->inv_mass + B->inv_mass, tA = 0, tB = 0;
     int32_t kA, kB;
@@ -338,8 +353,39 @@ typedef struct step_context {
     softness soft, soft_static;
     pg_fix push_max;
     uint32_t effects;
+    int rotation;            /* PG_EFFECT_ROTATION is on */
     int separation_cached;   /* the soft pass of substeps 1.. reuses the relax pass's separations */
+    const pg_world *world;   /* for the bodies' masses when a constraint's rows are set late */
+    uint32_t dummy;          /* the solver slot of the static side */
 } step_context;
+
+/* The rows' coefficients of every point of c (normal and, with friction, tangent), the
+ * friction ratios and the block: what LAZY ROWS defers. A pure function of the step's
+ * start, so it gives the same values whenever it runs. */
+PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
+{
+    const pg_world *w = ctx->world;
+    const pg_body *A = c->a == ctx->dummy ? &immovable : &w->bodies[c->a];
+    const pg_body *B = c->b == ctx->dummy ? &immovable : &w->bodies[c->b];
+    pg_dir t;
+    int32_t k;
+    t.x = c->n.y;
+    t.y = -c->n.x;
+    for (k = 0; k < c->count; ++k) {
+        constraint_point *p = &c->p[k];
+        denominator dn = row_coefficients(A, B, p->cnA, p->cnB, c->n, ctx->rotation, &p->lnA_x, &p->lnA_y, &p->lnB_x, &p->lnB_y,
+                                          &p->gnA, &p->gnB);
+        p->friction_ratio = 0;
+        p->ltA_x = p->ltA_y = p->ltB_x = p->ltB_y = p->gtA = p->gtB = 0;
+        if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
+            denominator dt = row_coefficients(A, B, p->ctA, p->ctB, t, ctx->rotation, &p->ltA_x, &p->ltA_y, &p->ltB_x, &p->ltB_y,
+                                              &p->gtA, &p->gtB);
+            p->friction_ratio = pg_fix_mul(c->friction, k_ratio(dt, dn));
+        }
+    }
+    setup_block(c);
+    c->rows_ready = 1;
+}
 
 /* ---- the row kernel ------------------------------------------------------------------
  * A constraint loads its two bodies' velocities into int64 locals, solves its rows
@@ -585,6 +631,15 @@ PG__INLINE_PASS int solve_normal_pair(const step_context *ctx, const softness *s
     return 1;
 }
 
+/* Whether a normal row at separation s and relative speed rel wants nothing of a point
+ * that holds no impulse: its target b >= 0, so the rigid and the soft update both leave
+ * lambda at 0, alone or solved as a block (see LAZY ROWS). */
+PG__INLINE_ROW int row_idle(const step_context *ctx, const softness *soft, int64_t s, int64_t rel, int use_bias)
+{
+    int is_soft;
+    return normal_target(ctx, soft, s, rel, use_bias, &is_soft) >= 0;
+}
+
 PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
@@ -595,10 +650,16 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
     t.x = c->n.y;
     t.y = -c->n.x;
     if (second == NULL) {
-        int64_t s = normal_separation(ctx, c, A, B, first, use_bias);
-        solve_normal(ctx, soft, c, &va, &vb, first, s, normal_speed(c, &va, &vb, first), use_bias);
+        int64_t s = normal_separation(ctx, c, A, B, first, use_bias), rel = normal_speed(c, &va, &vb, first);
+        if (!c->rows_ready) {
+            /* nothing held (LAZY ROWS): and while nothing is wanted, nothing moves */
+            if (row_idle(ctx, soft, s, rel, use_bias)) goto store;
+            prepare_rows(ctx, c);
+        }
+        solve_normal(ctx, soft, c, &va, &vb, first, s, rel, use_bias);
     } else {
         int64_t s0 = normal_separation(ctx, c, A, B, first, use_bias), s1 = normal_separation(ctx, c, A, B, second, use_bias);
+        int64_t rel0, rel1;
         if (order) {
             constraint_point *swap = first;
             int64_t ss = s0;
@@ -607,10 +668,16 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
             s0 = s1;
             s1 = ss;
         }
-        if (!c->block || !solve_normal_pair(ctx, soft, c, &va, &vb, first, second, s0, s1, normal_speed(c, &va, &vb, first),
-                                             normal_speed(c, &va, &vb, second), use_bias, order)) {
-            /* one after the other, alternating which goes first (see SYMMETRY above) */
-            solve_normal(ctx, soft, c, &va, &vb, first, s0, normal_speed(c, &va, &vb, first), use_bias);
+        rel0 = normal_speed(c, &va, &vb, first);
+        rel1 = normal_speed(c, &va, &vb, second);
+        if (!c->rows_ready) {
+            if (row_idle(ctx, soft, s0, rel0, use_bias) && row_idle(ctx, soft, s1, rel1, use_bias)) goto store;
+            prepare_rows(ctx, c);
+        }
+        if (!c->block || !solve_normal_pair(ctx, soft, c, &va, &vb, first, second, s0, s1, rel0, rel1, use_bias, order)) {
+            /* one after the other, alternating which goes first (see SYMMETRY above); the
+             * block changed nothing when it declined, so rel0 still holds */
+            solve_normal(ctx, soft, c, &va, &vb, first, s0, rel0, use_bias);
             solve_normal(ctx, soft, c, &va, &vb, second, s1, normal_speed(c, &va, &vb, second), use_bias);
         }
     }
@@ -623,6 +690,7 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
         solve_friction(&va, &vb, first, t);
         if (second != NULL) solve_friction(&va, &vb, second, t);
     }
+store:
     store_velocity(A, &va);
     store_velocity(B, &vb);
 }
@@ -758,6 +826,93 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
     }
 }
 
+/* The step's constraints, one per contact with points and a moving side, in contact order:
+ * anchors, the rows' coefficients and the block couplings, from the state at the step's
+ * start. Returns how many. Out of line: its divisions and wide products are set-up, done
+ * once a step, and keeping them out of pg__solve leaves the substep loop to itself. */
+PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *bodies, constraint *cons)
+{
+    const pg_world *w = ctx->world;
+    const uint32_t dummy = ctx->dummy, effects = ctx->effects;
+    const int rotation = ctx->rotation;
+    uint32_t n_cons = 0, i;
+    for (i = 0; i < w->contact_count; ++i) {
+        pg_contact *ct = &w->contacts[i];
+        const pg_body *A = &w->bodies[ct->body_a], *B = &w->bodies[ct->body_b];
+        int activeA = pg__body_is_active(A), activeB = pg__body_is_active(B);
+        constraint *c;
+        int32_t k;
+        pg_dir t;
+        int held = 0; /* a point has an impulse to warm start with */
+        pg_vec2 A_center = A->center, B_center = B->center;
+        if (ct->point_count == 0 || (!activeA && !activeB)) continue;
+        /* A side that does not take part in this step is the dummy, and the rows must see
+         * it as infinitely heavy so that no impulse ever moves the dummy, which stands in
+         * for every static side. (A sleeping body touching a moving one is woken by the
+         * contact update before the solve, so in practice that side is static.) */
+        if (!activeA) A = &immovable;
+        if (!activeB) B = &immovable;
+        c = &cons[n_cons++];
+        c->a = activeA ? ct->body_a : dummy;
+        c->b = activeB ? ct->body_b : dummy;
+        c->contact = i;
+        c->n = ct->normal;
+        c->count = ct->point_count;
+        /* A side that cannot move gets the stiffer softness, and so does a pair whose
+         * masses differ 4:1 or more: a soft contact's steady overlap grows with the load
+         * over the lighter body's mass, and this halves it where the ratio is large. */
+        c->soft_static = A->inv_mass == 0 || B->inv_mass == 0 || A->inv_mass / 4 >= B->inv_mass || B->inv_mass / 4 >= A->inv_mass;
+        c->round_a = centred_circle(w, ct->shape_a, ct->body_a);
+        c->round_b = centred_circle(w, ct->shape_b, ct->body_b);
+        if (!c->round_a) bodies[c->a].turns_anchors = 1;
+        if (!c->round_b) bodies[c->b].turns_anchors = 1;
+        c->normal_linear = 1;
+        c->restitution = (effects & PG_EFFECT_RESTITUTION) != 0 ? ct->restitution : 0;
+        t.x = c->n.y;
+        t.y = -c->n.x;
+        for (k = 0; k < c->count; ++k) {
+            constraint_point *p = &c->p[k];
+            const pg_contact_point *cp = &ct->points[k];
+            {
+                /* Anchors on each body's own surface (the manifold point is midway between
+                 * them): a speculative point can be far from both bodies, and an anchor out
+                 * there would swing with the body's rotation and fake the gap. */
+                int64_t hx = pg__round_shift64((int64_t)c->n.x * cp->separation, 31);
+                int64_t hy = pg__round_shift64((int64_t)c->n.y * cp->separation, 31);
+                p->rA = pg_v2(pg__sat64((int64_t)cp->point.x - hx - A_center.x), pg__sat64((int64_t)cp->point.y - hy - A_center.y));
+                p->rB = pg_v2(pg__sat64((int64_t)cp->point.x + hx - B_center.x), pg__sat64((int64_t)cp->point.y + hy - B_center.y));
+            }
+            {
+                /* in int64: a restored snapshot may hold any contact point, and anchors
+                 * saturated at the edge of the range are up to 2^32 apart */
+                int64_t dx = (int64_t)p->rB.x - p->rA.x, dy = (int64_t)p->rB.y - p->rA.y;
+                p->adjusted_separation = pg__sat64((int64_t)cp->separation - pg__round_shift64(c->n.x * dx + c->n.y * dy, 30));
+            }
+            /* No torque about a round side's centre, and none on a side that cannot turn
+             * in this step (its angular velocity is 0 and its inverse inertia too). */
+            p->cnA = c->round_a || !activeA || !rotation ? 0 : cross_rd(p->rA, c->n);
+            p->cnB = c->round_b || !activeB || !rotation ? 0 : cross_rd(p->rB, c->n);
+            if (p->cnA != 0 || p->cnB != 0) c->normal_linear = 0;
+            p->ctA = cross_rd(p->rA, t);
+            p->ctB = cross_rd(p->rB, t);
+            p->normal_impulse = (pg_fix)clamp_lambda(cp->normal_impulse, 0, LAMBDA_MAX);
+            p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
+            p->max_normal_impulse = 0;
+            if (p->normal_impulse != 0 || p->tangent_impulse != 0) held = 1;
+            {
+                velocity va = load_velocity(&bodies[c->a]), vb = load_velocity(&bodies[c->b]);
+                p->relative_velocity = pg__sat64(relative_speed(&va, &vb, c->n, p->cnA, p->cnB));
+            }
+        }
+        c->friction = ct->friction;
+        c->rows_ready = 0;
+        c->block = 0; /* restitution reads it: a constraint whose rows never get set never pushed */
+        if (held) prepare_rows(ctx, c);
+    }
+
+    return n_cons;
+}
+
 void pg__solve(pg_world *w)
 {
     unsigned char *scratch = (unsigned char *)w->solver_scratch;
@@ -780,7 +935,10 @@ void pg__solve(pg_world *w)
     ctx.soft_static = make_soft(pg_fix_add(hertz, hertz), w->def.contact_damping_ratio, ctx.n);
     ctx.push_max = w->def.contact_push_max;
     ctx.effects = effects;
+    ctx.rotation = rotation;
     ctx.separation_cached = 0;
+    ctx.world = w;
+    ctx.dummy = dummy;
 
     /* the dummy static body */
     {
@@ -837,82 +995,7 @@ void pg__solve(pg_world *w)
     }
 
     /* constraints, in contact order */
-    for (i = 0; i < w->contact_count; ++i) {
-        pg_contact *ct = &w->contacts[i];
-        const pg_body *A = &w->bodies[ct->body_a], *B = &w->bodies[ct->body_b];
-        int activeA = pg__body_is_active(A), activeB = pg__body_is_active(B);
-        constraint *c;
-        int32_t k;
-        pg_dir t;
-        pg_vec2 A_center = A->center, B_center = B->center;
-        if (ct->point_count == 0 || (!activeA && !activeB)) continue;
-        /* A side that does not take part in this step is the dummy, and the rows must see
-         * it as infinitely heavy so that no impulse ever moves the dummy, which stands in
-         * for every static side. (A sleeping body touching a moving one is woken by the
-         * contact update before the solve, so in practice that side is static.) */
-        if (!activeA) A = &immovable;
-        if (!activeB) B = &immovable;
-        c = &cons[n_cons++];
-        c->a = activeA ? ct->body_a : dummy;
-        c->b = activeB ? ct->body_b : dummy;
-        c->contact = i;
-        c->n = ct->normal;
-        c->count = ct->point_count;
-        /* A side that cannot move gets the stiffer softness, and so does a pair whose
-         * masses differ 4:1 or more: a soft contact's steady overlap grows with the load
-         * over the lighter body's mass, and this halves it where the ratio is large. */
-        c->soft_static = A->inv_mass == 0 || B->inv_mass == 0 || A->inv_mass / 4 >= B->inv_mass || B->inv_mass / 4 >= A->inv_mass;
-        c->round_a = centred_circle(w, ct->shape_a, ct->body_a);
-        c->round_b = centred_circle(w, ct->shape_b, ct->body_b);
-        if (!c->round_a) bodies[c->a].turns_anchors = 1;
-        if (!c->round_b) bodies[c->b].turns_anchors = 1;
-        c->normal_linear = 1;
-        c->restitution = (effects & PG_EFFECT_RESTITUTION) != 0 ? ct->restitution : 0;
-        t.x = c->n.y;
-        t.y = -c->n.x;
-        for (k = 0; k < c->count; ++k) {
-            constraint_point *p = &c->p[k];
-            const pg_contact_point *cp = &ct->points[k];
-            denominator dn, dt;
-            {
-                /* Anchors on each body's own surface (the manifold point is midway between
-                 * them): a speculative point can be far from both bodies, and an anchor out
-                 * there would swing with the body's rotation and fake the gap. */
-                int64_t hx = pg__round_shift64((int64_t)c->n.x * cp->separation, 31);
-                int64_t hy = pg__round_shift64((int64_t)c->n.y * cp->separation, 31);
-                p->rA = pg_v2(pg__sat64((int64_t)cp->point.x - hx - A_center.x), pg__sat64((int64_t)cp->point.y - hy - A_center.y));
-                p->rB = pg_v2(pg__sat64((int64_t)cp->point.x + hx - B_center.x), pg__sat64((int64_t)cp->point.y + hy - B_center.y));
-            }
-            {
-                /* in int64: a restored snapshot may hold any contact point, and anchors
-                 * saturated at the edge of the range are up to 2^32 apart */
-                int64_t dx = (int64_t)p->rB.x - p->rA.x, dy = (int64_t)p->rB.y - p->rA.y;
-                p->adjusted_separation = pg__sat64((int64_t)cp->separation - pg__round_shift64(c->n.x * dx + c->n.y * dy, 30));
-            }
-            /* No torque about a round side's centre, and none on a side that cannot turn
-             * in this step (its angular velocity is 0 and its inverse inertia too). */
-            p->cnA = c->round_a || !activeA || !rotation ? 0 : cross_rd(p->rA, c->n);
-            p->cnB = c->round_b || !activeB || !rotation ? 0 : cross_rd(p->rB, c->n);
-            if (p->cnA != 0 || p->cnB != 0) c->normal_linear = 0;
-            p->ctA = cross_rd(p->rA, t);
-            p->ctB = cross_rd(p->rB, t);
-            dn = row_coefficients(A, B, p->cnA, p->cnB, c->n, rotation, &p->lnA_x, &p->lnA_y, &p->lnB_x, &p->lnB_y, &p->gnA, &p->gnB);
-            p->friction_ratio = 0;
-            p->ltA_x = p->ltA_y = p->ltB_x = p->ltB_y = p->gtA = p->gtB = 0;
-            if ((effects & PG_EFFECT_FRICTION) != 0) {
-                dt = row_coefficients(A, B, p->ctA, p->ctB, t, rotation, &p->ltA_x, &p->ltA_y, &p->ltB_x, &p->ltB_y, &p->gtA, &p->gtB);
-                p->friction_ratio = pg_fix_mul(ct->friction, k_ratio(dt, dn));
-            }
-            p->normal_impulse = (pg_fix)clamp_lambda(cp->normal_impulse, 0, LAMBDA_MAX);
-            p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
-            p->max_normal_impulse = 0;
-            {
-                velocity va = load_velocity(&bodies[c->a]), vb = load_velocity(&bodies[c->b]);
-                p->relative_velocity = pg__sat64(relative_speed(&va, &vb, c->n, p->cnA, p->cnB));
-            }
-        }
-        setup_block(c);
-    }
+    n_cons = prepare_constraints(&ctx, bodies, cons);
 
     for (sub = 0; sub < w->def.substeps; ++sub) {
         int order = (int)(sub & 1u);
