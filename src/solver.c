@@ -104,8 +104,9 @@ typedef struct constraint_point {
     int32_t gnA, gnB, gtA, gtB;      /* Q8.24 1/m */
     pg_fix friction_ratio;           /* f Kt / Kn */
     pg_fix relative_velocity;        /* normal, at the start of the step */
-    int64_t separation;              /* from the last relax pass: positions have not moved
-                                        since, so the next soft pass reuses it */
+    int64_t separation;              /* from the last relax pass, or the step's start:
+                                        positions have not moved since, so the next soft
+                                        pass reuses it */
     pg_fix normal_impulse, tangent_impulse, max_normal_impulse;
 } constraint_point;
 
@@ -354,7 +355,6 @@ typedef struct step_context {
     pg_fix push_max;
     uint32_t effects;
     int rotation;            /* PG_EFFECT_ROTATION is on */
-    int separation_cached;   /* the soft pass of substeps 1.. reuses the relax pass's separations */
     const pg_world *world;   /* for the bodies' masses when a constraint's rows are set late */
     uint32_t dummy;          /* the solver slot of the static side */
 } step_context;
@@ -521,14 +521,15 @@ static inline int64_t mass_scale_times(int32_t m, int64_t x)
     return mass_scale_times_wide(m, x);
 }
 
-/* The current separation of a point: from where its anchors are now, or in the soft pass
- * of substeps 1.. the one the relax pass measured (nothing has moved since). The relax
- * pass stores it for that. */
-PG__INLINE_PASS int64_t normal_separation(const step_context *ctx, const constraint *c, const solver_body *A, const solver_body *B,
-                                          constraint_point *p, int use_bias)
+/* The current separation of a point: in the relax pass from where its anchors are now,
+ * which it stores; in the soft pass the one stored last, since nothing has moved since:
+ * the relax pass's, or in the first substep the one prepare_constraints measured at the
+ * step's start. */
+PG__INLINE_PASS int64_t normal_separation(const constraint *c, const solver_body *A, const solver_body *B, constraint_point *p,
+                                          int use_bias)
 {
     int64_t s, ax, ay, bx, by;
-    if (use_bias && ctx->separation_cached) return p->separation;
+    if (use_bias) return p->separation;
     anchor_now(A, p->rA, c->round_a, &ax, &ay);
     anchor_now(B, p->rB, c->round_b, &bx, &by);
     s = pg__round_shift64(c->n.x * (bx - ax) + c->n.y * (by - ay), 30) + p->adjusted_separation;
@@ -650,7 +651,7 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
     t.x = c->n.y;
     t.y = -c->n.x;
     if (second == NULL) {
-        int64_t s = normal_separation(ctx, c, A, B, first, use_bias), rel = normal_speed(c, &va, &vb, first);
+        int64_t s = normal_separation(c, A, B, first, use_bias), rel = normal_speed(c, &va, &vb, first);
         if (!c->rows_ready) {
             /* nothing held (LAZY ROWS): and while nothing is wanted, nothing moves */
             if (row_idle(ctx, soft, s, rel, use_bias)) goto store;
@@ -658,7 +659,7 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
         }
         solve_normal(ctx, soft, c, &va, &vb, first, s, rel, use_bias);
     } else {
-        int64_t s0 = normal_separation(ctx, c, A, B, first, use_bias), s1 = normal_separation(ctx, c, A, B, second, use_bias);
+        int64_t s0 = normal_separation(c, A, B, first, use_bias), s1 = normal_separation(c, A, B, second, use_bias);
         int64_t rel0, rel1;
         if (order) {
             constraint_point *swap = first;
@@ -886,7 +887,11 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
                 /* in int64: a restored snapshot may hold any contact point, and anchors
                  * saturated at the edge of the range are up to 2^32 apart */
                 int64_t dx = (int64_t)p->rB.x - p->rA.x, dy = (int64_t)p->rB.y - p->rA.y;
-                p->adjusted_separation = pg__sat64((int64_t)cp->separation - pg__round_shift64(c->n.x * dx + c->n.y * dy, 30));
+                int64_t along = pg__round_shift64(c->n.x * dx + c->n.y * dy, 30);
+                p->adjusted_separation = pg__sat64((int64_t)cp->separation - along);
+                /* what normal_separation finds before anything moves (dp = 0, dq = 1 make
+                 * each anchor exactly r), for the first substep's soft pass */
+                p->separation = along + p->adjusted_separation;
             }
             /* No torque about a round side's centre, and none on a side that cannot turn
              * in this step (its angular velocity is 0 and its inverse inertia too). */
@@ -936,7 +941,6 @@ void pg__solve(pg_world *w)
     ctx.push_max = w->def.contact_push_max;
     ctx.effects = effects;
     ctx.rotation = rotation;
-    ctx.separation_cached = 0;
     ctx.world = w;
     ctx.dummy = dummy;
 
@@ -1001,7 +1005,6 @@ void pg__solve(pg_world *w)
         int order = (int)(sub & 1u);
         integrate_velocities(w, bodies, active, n_active, &ctx, sub, rotation);
         for (i = 0; i < n_cons; ++i) warm_start(&cons[i], bodies);
-        ctx.separation_cached = sub > 0;
         for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, &cons[i], bodies, 1, order);
         /* integrate positions */
         for (i = 0; i < n_active; ++i) {
