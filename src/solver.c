@@ -904,7 +904,8 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
             p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
             p->max_normal_impulse = 0;
             if (p->normal_impulse != 0 || p->tangent_impulse != 0) held = 1;
-            {
+            p->relative_velocity = 0;
+            if (c->restitution != 0) { /* only the restitution pass reads it */
                 velocity va = load_velocity(&bodies[c->a]), vb = load_velocity(&bodies[c->b]);
                 p->relative_velocity = pg__sat64(relative_speed(&va, &vb, c->n, p->cnA, p->cnB));
             }
