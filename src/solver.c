@@ -212,12 +212,16 @@ static pg_fix k_ratio(denominator t, denominator n)
 static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return (pg_fix)pg__round_shift64((int64_t)r.x * d.y - (int64_t)r.y * d.x, 30); }
 
 /* round(a c / 2^16) for a wide a and a Q16.16 c: one int64 product when it cannot
- * overflow (|a| < 2^41, |c| < 2^21: ordinary bodies), the 128-bit path otherwise. */
+ * overflow (-2^41 <= a < 2^41 and -2^21 <= c < 2^21, so |a c| <= 2^62: ordinary bodies),
+ * the 128-bit path otherwise; both are exact and round alike. The range test is one
+ * branch: a + 2^41 and c + 2^21, taken as unsigned, are below 2^42 and 2^22. */
 static inline int64_t mul_q16(int64_t a, pg_fix c)
 {
     uint64_t ua, uc, hi, lo, r;
-    if (a == 0 || c == 0) return 0; /* often: a circle's anchor lies on its normal */
-    if (a < (INT64_C(1) << 41) && a > -(INT64_C(1) << 41) && c < (1 << 21) && c > -(1 << 21)) return pg__round_shift64(a * c, 16);
+    uint64_t ra = (uint64_t)a + (UINT64_C(1) << 41), rc = (uint64_t)(int64_t)c + (UINT64_C(1) << 21);
+    if (c == 0) return 0; /* often: a circle's anchor lies on its normal (and a small ball's
+                             invI is past 2^41) */
+    if (((ra >> 42) | (rc >> 22)) == 0) return pg__round_shift64(a * c, 16);
     /* |a| |c| = hi 2^32 + lo with hi = (|a| >> 32) |c| < 2^62 and lo = (|a| mod 2^32) |c|
      * < 2^63, so round(|a| |c| / 2^16) = hi 2^16 + (lo + 2^15) / 2^16, rounded the same
      * way as pg__mul64_shr (nearest, ties away from zero) and saturated like it. */
