@@ -51,6 +51,15 @@
  * changes no bit; the coefficients are a function of the step's start whenever they are
  * computed.
  *
+ * APPROACH: the speed a point bounces back from is its relative normal speed just before
+ * it first pushes in the step, in the substep where the gap closes, not the one at the
+ * step's start (Box2D v3's choice). A falling body gains g dt in the step in which it
+ * lands, and rebounding from the speed it had at the step's start lost that: a ball of
+ * restitution 1 dropped from 2 m kept 94.4 % of its energy at the first bounce and
+ * stopped bouncing after 32 bounces. Now only the last substep's g h is missed: 98.3 %,
+ * and 128 bounces in 10 000 steps (test_bounce_energy_never_grows holds each bounce to
+ * that model).
+ *
  * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
  * 1, odd ones 1 then 0); the block is the same in either order; and all rounding is
  * symmetric in sign, so a symmetric column gets no sideways push from the solver's
@@ -103,7 +112,8 @@ typedef struct constraint_point {
     int32_t ltA_x, ltA_y, ltB_x, ltB_y;
     int32_t gnA, gnB, gtA, gtB;      /* Q8.24 1/m */
     pg_fix friction_ratio;           /* f Kt / Kn */
-    pg_fix relative_velocity;        /* normal, at the start of the step */
+    pg_fix relative_velocity;        /* normal, just before the point first pushes in this
+                                        step (APPROACH); read only once it has pushed */
     int64_t separation;              /* from the last relax pass, or the step's start:
                                         positions have not moved since, so the next soft
                                         pass reuses it */
@@ -585,11 +595,19 @@ PG__INLINE_ROW void normal_apply(const constraint *c, velocity *va, velocity *vb
 
 /* One normal row at separation s with relative normal speed rel (measured from va, vb
  * as they are now). */
+/* The approach speed a bouncing point rebounds from (APPROACH): its relative normal
+ * speed rel just before it first pushes in this step, kept until it does. */
+PG__INLINE_ROW void note_approach(const constraint *c, constraint_point *p, int64_t rel)
+{
+    if (c->restitution != 0 && p->max_normal_impulse == 0) p->relative_velocity = pg__sat64(rel);
+}
+
 PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft, const constraint *c, velocity *va, velocity *vb,
                                  constraint_point *p, int64_t s, int64_t rel, int use_bias)
 {
     int is_soft;
     int64_t b = normal_target(ctx, soft, s, rel, use_bias, &is_soft);
+    note_approach(c, p, rel);
     normal_apply(c, va, vb, p, normal_update(soft, p, b, is_soft));
 }
 
@@ -631,6 +649,8 @@ PG__INLINE_PASS int solve_normal_pair(const step_context *ctx, const softness *s
     acc0 = normal_update(soft, p0, y0, soft0);
     acc1 = normal_update(soft, p1, y1, soft1);
     if (acc0 < 0 || acc1 < 0) return 0;
+    note_approach(c, p0, rel0);
+    note_approach(c, p1, rel1);
     normal_apply(c, va, vb, p0, acc0);
     normal_apply(c, va, vb, p1, acc1);
     return 1;
@@ -716,12 +736,12 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
     store_velocity(B, &vb);
 }
 
-/* A point bounces when it approached faster than the threshold at the step's start and
- * the contact pushed during the step. */
+/* A point bounces when it approached faster than the threshold just before it first
+ * pushed (APPROACH), and it did push during the step. */
 static inline int bounces(const constraint_point *p, pg_fix threshold) { return p->relative_velocity <= -threshold && p->max_normal_impulse != 0; }
 
 /* What the rebound row drives to 0: the relative normal speed now plus e times the
- * approach speed at the step's start. */
+ * approach speed. */
 static inline int64_t rebound_target(const constraint *c, const velocity *va, const velocity *vb, const constraint_point *p)
 {
     return relative_speed(va, vb, c->n, p->cnA, p->cnB) + pg_fix_mul(c->restitution, p->relative_velocity);
@@ -908,11 +928,7 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
             p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
             p->max_normal_impulse = 0;
             if (p->normal_impulse != 0 || p->tangent_impulse != 0) held = 1;
-            p->relative_velocity = 0;
-            if (c->restitution != 0) { /* only the restitution pass reads it */
-                velocity va = load_velocity(&bodies[c->a]), vb = load_velocity(&bodies[c->b]);
-                p->relative_velocity = pg__sat64(relative_speed(&va, &vb, c->n, p->cnA, p->cnB));
-            }
+            p->relative_velocity = 0; /* set before the point first pushes (APPROACH) */
         }
         c->friction = ct->friction;
         c->rows_ready = 0;

@@ -493,7 +493,9 @@ static void test_restitution_one_bounces_back(void **state)
     (void)state;
     assert_true(b.hits >= 1);
     print_message("restitution 1: dropped from %.3f m, first bounce reaches %.4f m\n", drop, b.first_apex);
-    expect_near(b.first_apex, drop, 0.1 * drop, "restitution 1: height of the first bounce (m)");
+    /* it misses at most a substep's g h of the approach speed (src/solver.c, APPROACH) and
+     * the integrator as much at the apex: 2 g v h / g = 2 v h = 0.053 m at v = 6.3 m/s */
+    expect_near(b.first_apex, drop, 0.03 * drop, "restitution 1: height of the first bounce (m)");
 }
 
 static void test_restitution_zero_comes_to_rest(void **state)

@@ -656,8 +656,11 @@ static double normal_update(const softness *soft, const spoint *p, double y, int
     return is_soft ? p->ln - soft->mass_scale * y - soft->impulse_scale * p->ln : p->ln - y;
 }
 
-static void normal_apply(sbody *A, sbody *B, spoint *p, double acc)
+/* rel: the relative normal speed the row was solved from; a point's approach speed for
+ * restitution is the one just before it first pushes in the step (pogon's APPROACH). */
+static void normal_apply(sbody *A, sbody *B, spoint *p, double acc, double rel)
 {
+    if (p->max_ln == 0) p->relative_velocity = rel;
     if (acc < 0) acc = 0;
     apply(A, B, acc - p->ln, p->lnA, p->lnB, p->gnA, p->gnB);
     p->ln = acc;
@@ -698,21 +701,22 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         /* both rows at once: the change -E^-1 b (pogon's solver.c, BLOCK) */
         spoint *p0 = &c->p[0], *p1 = &c->p[1];
         int soft0, soft1;
-        double b0 = normal_target(ctx, soft, s[0], rel_speed(A, B, n, p0->cnA, p0->cnB), use_bias, &soft0);
-        double b1 = normal_target(ctx, soft, s[1], rel_speed(A, B, n, p1->cnA, p1->cnB), use_bias, &soft1);
+        double rel0 = rel_speed(A, B, n, p0->cnA, p0->cnB), rel1 = rel_speed(A, B, n, p1->cnA, p1->cnB);
+        double b0 = normal_target(ctx, soft, s[0], rel0, use_bias, &soft0);
+        double b1 = normal_target(ctx, soft, s[1], rel1, use_bias, &soft1);
         double det = 1 - c->e01 * c->e10, y0 = (b0 - c->e01 * b1) / det, y1 = (b1 - c->e10 * b0) / det;
         double acc0 = normal_update(soft, p0, y0, soft0), acc1 = normal_update(soft, p1, y1, soft1);
         if (acc0 >= 0 && acc1 >= 0) {
-            normal_apply(A, B, p0, acc0);
-            normal_apply(A, B, p1, acc1);
+            normal_apply(A, B, p0, acc0, rel0);
+            normal_apply(A, B, p1, acc1, rel1);
             done = 1;
         }
     }
     for (k = 0; !done && k < c->count; ++k) {
         int i = order ? c->count - 1 - k : k, is_soft;
         spoint *p = &c->p[i];
-        double b = normal_target(ctx, soft, s[i], rel_speed(A, B, n, p->cnA, p->cnB), use_bias, &is_soft);
-        normal_apply(A, B, p, normal_update(soft, p, b, is_soft));
+        double rel = rel_speed(A, B, n, p->cnA, p->cnB), b = normal_target(ctx, soft, s[i], rel, use_bias, &is_soft);
+        normal_apply(A, B, p, normal_update(soft, p, b, is_soft), rel);
     }
     if (ctx->friction) {
         for (k = 0; k < c->count; ++k) {
@@ -798,7 +802,7 @@ void ref_step(ref_world *w)
             p->ln = cp->ln;
             p->lt = d->friction ? cp->lt : 0;
             p->max_ln = 0;
-            p->relative_velocity = rel_speed(sb_of(w, c->a), sb_of(w, c->b), c->n, p->cnA, p->cnB);
+            p->relative_velocity = 0; /* set before the point first pushes (normal_apply) */
         }
         setup_block(c);
     }
