@@ -31,6 +31,9 @@
  *   collision_momentum, collision_energy
  *               two frictionless balls (r 0.5 and 0.3 m, restitution 1) colliding off
  *               centre without gravity: |p1 - p0| / |p0| and |E1 - E0| / E0 after 1 s
+ *   bounce      a ball (r 0.25 m, restitution 1) dropped from 2 m onto the ground: the
+ *               energy per unit mass g h + v^2 / 2 lost by the top of the first bounce,
+ *               against the 20 J/kg it started with (relative)
  *   friction_stop  a 1 m box sliding at 5 m/s on friction 0.5: stopping distance against
  *               v0^2 / (2 mu g) = 2.5 m (m)
  *   incline     a 1 m box on a 30 degree slope, friction 0.25: acceleration from the
@@ -487,6 +490,56 @@ static int scene_collision(const setting *s, int repeat, run_result *res)
     return 1;
 }
 
+/* A ball of restitution 1 dropped from 2 m (its bottom) onto the ground: the energy lost
+ * by the top of the first bounce. Elastic, so the truth is none. */
+static int scene_bounce(const setting *s, int repeat, run_result *res)
+{
+    const double r = 0.25, h0 = 2.0, g = 10.0, e0 = g * h0;
+    double ms[MAX_REPEAT], err = 1, apex = 0;
+    int rep, steps = 3 * s->rate; /* down in 0.63 s, up again by 1.3 s */
+    for (rep = 0; rep <= repeat; ++rep) { /* pass 0 measures, the others time */
+        pg_world_def d = world_def(s, 2, PG_FIX_C(-10));
+        void *mem;
+        pg_world *w = new_world(&d, &mem);
+        pg_body_def bd = pg_default_body_def();
+        pg_shape_def sd = pg_default_shape_def();
+        pg_body_id ground, ball;
+        double prev_vy = 0;
+        int k, bounced = 0;
+        if (w == NULL) return 0;
+        bd.position = pg_v2(0, PG_FIX_C(-1));
+        if (!check(pg_make_wall(w, &bd, &sd, PG_FIX_C(100), PG_FIX_C(2), &ground), "ground")) { free(mem); return 0; }
+        bd.type = PG_BODY_DYNAMIC;
+        bd.position = pg_v2(0, fix_of(h0 + r));
+        sd.restitution = PG_FIX_ONE;
+        if (!check(pg_make_ball(w, &bd, &sd, fix_of(r), &ball), "ball")) { free(mem); return 0; }
+        if (rep > 0) {
+            double t0 = now_ms();
+            for (k = 0; k < steps; ++k) pg_world_step(w);
+            ms[rep - 1] = (now_ms() - t0) / steps;
+            free(mem);
+            continue;
+        }
+        err = 1; /* no bounce: all of it lost */
+        for (k = 0; k < steps; ++k) {
+            double vy, hgt;
+            pg_world_step(w);
+            vy = fx(pg_body_linear_velocity(w, ball).y);
+            hgt = fx(pg_body_position(w, ball).y) - r;
+            if (prev_vy < 0 && vy > 0) bounced = 1;
+            if (bounced && prev_vy > 0 && vy <= 0) { /* the top of the first bounce */
+                apex = hgt;
+                err = fabs(e0 - (g * hgt + 0.5 * vy * vy)) / e0;
+                break;
+            }
+            prev_vy = vy;
+        }
+        free(mem);
+    }
+    add_row(res, "bounce", apex, err, "relative", fastest(ms, repeat));
+    return 1;
+}
+
 /* A 1 m box sliding at 5 m/s on friction 0.5 (both shapes 0.5: the mixed value is 0.5). */
 static int scene_friction_stop(const setting *s, int repeat, run_result *res)
 {
@@ -755,7 +808,7 @@ static int run_local(const setting *s, int repeat, int ref_repeat, run_result *r
     memset(res, 0, sizeof *res);
     res->s = *s;
     res->ok = scene_ballistic(s, repeat, 0, res) && scene_ballistic(s, repeat, 1, res) && scene_spin(s, repeat, res) &&
-              scene_collision(s, repeat, res) && scene_friction_stop(s, repeat, res) && scene_incline(s, repeat, res) &&
+              scene_collision(s, repeat, res) && scene_bounce(s, repeat, res) && scene_friction_stop(s, repeat, res) && scene_incline(s, repeat, res) &&
               scene_stack(s, repeat, res) && scene_pyramid(s, repeat, ref_repeat, res) && scene_rain(s, repeat, ref_repeat, res);
     return res->ok;
 }
@@ -895,9 +948,9 @@ static const run_result *find_result(const run_result *all, int n, const setting
 
 /* ---- report ------------------------------------------------------------------------------------ */
 static const char *const SCENES[] = {"freefall", "projectile", "spin", "spin_table", "collision_momentum", "collision_energy",
-                                     "friction_stop", "incline", "stack", "pyramid", "rain500"};
+                                     "bounce", "friction_stop", "incline", "stack", "pyramid", "rain500"};
 #define N_SCENES ((int)(sizeof SCENES / sizeof SCENES[0]))
-static const char *const SHORT[] = {"free fall", "projectile", "spin", "spin (table)", "momentum", "energy", "stop", "incline", "stack drift",
+static const char *const SHORT[] = {"free fall", "projectile", "spin", "spin (table)", "momentum", "energy", "bounce", "stop", "incline", "stack drift",
                                     "pyramid vs ref", "rain vs ref"};
 
 /* ms per step of the heavy scenes: pyramid + rain 500 + stack. */
@@ -990,7 +1043,9 @@ static void print_presets(const run_result *all, int n)
     preset p[3];
     const run_result *r[3];
     int np = presets(p), i, j;
-    static const char *const UNIT[] = {"m", "m", "m", "m", "relative", "relative", "m", "m/s^2", "m", "m", "m"};
+    static const char *const UNIT[] = {"m", "m", "m", "m", "relative", "relative", "relative", "m", "m/s^2", "m", "m", "m"};
+    typedef char unit_per_scene[(int)(sizeof UNIT / sizeof UNIT[0]) == N_SCENES ? 1 : -1]; /* one unit a scene */
+    (void)sizeof(unit_per_scene);
     for (i = 0; i < np; ++i) r[i] = find_result(all, n, &p[i].s);
     out("### Presets\n\n");
     for (i = 0; i < np; ++i) out("- **%s**: %s\n", p[i].name, p[i].why);
