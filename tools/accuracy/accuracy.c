@@ -158,6 +158,15 @@ static double now_ms(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
+/* ms per step of `steps` bare steps of w (a timing pass: nothing measured). */
+static double timed_steps(pg_world *w, int steps)
+{
+    double t0 = now_ms();
+    int k;
+    for (k = 0; k < steps; ++k) pg_world_step(w);
+    return (now_ms() - t0) / steps;
+}
+
 static double wall_ms(void)
 {
     struct timespec ts;
@@ -358,9 +367,7 @@ static int scene_ballistic(const setting *s, int repeat, int launch, run_result 
         bd.linear_velocity = pg_v2(fix_of(vx), fix_of(vy));
         if (!check(pg_make_ball(w, &bd, &sd, PG_FIX_HALF, &ball), "ball")) { free(mem); return 0; }
         if (rep > 0) { /* timing passes: the bare steps */
-            double t0 = now_ms();
-            for (k = 0; k < steps; ++k) pg_world_step(w);
-            ms[rep - 1] = (now_ms() - t0) / steps;
+            ms[rep - 1] = timed_steps(w, steps);
             free(mem);
             continue;
         }
@@ -406,9 +413,7 @@ static int scene_spin(const setting *s, int repeat, run_result *res)
             return 0;
         }
         if (rep > 0) { /* timing passes: the bare steps */
-            double t0 = now_ms();
-            for (k = 0; k < steps; ++k) pg_world_step(w);
-            ms[rep - 1] = (now_ms() - t0) / steps;
+            ms[rep - 1] = timed_steps(w, steps);
             free(mem);
             continue;
         }
@@ -514,9 +519,7 @@ static int scene_bounce(const setting *s, int repeat, run_result *res)
         sd.restitution = PG_FIX_ONE;
         if (!check(pg_make_ball(w, &bd, &sd, fix_of(r), &ball), "ball")) { free(mem); return 0; }
         if (rep > 0) {
-            double t0 = now_ms();
-            for (k = 0; k < steps; ++k) pg_world_step(w);
-            ms[rep - 1] = (now_ms() - t0) / steps;
+            ms[rep - 1] = timed_steps(w, steps);
             free(mem);
             continue;
         }
@@ -665,9 +668,7 @@ static int scene_stack(const setting *s, int repeat, run_result *res)
         if (w == NULL) return 0;
         if (!build_pogon(w, dsc, n, ids)) { free(mem); return 0; }
         if (rep > 0) { /* timing passes: the bare steps */
-            double t0 = now_ms();
-            for (k = 0; k < steps; ++k) pg_world_step(w);
-            ms[rep - 1] = (now_ms() - t0) / steps;
+            ms[rep - 1] = timed_steps(w, steps);
             free(mem);
             continue;
         }
@@ -748,9 +749,7 @@ static int scene_rain(const setting *s, int repeat, int ref_repeat, run_result *
         if (w == NULL) return 0;
         if (!build_pogon(w, dsc, n, ids)) { free(mem); return 0; }
         if (rep > 0) { /* timing passes: the bare steps */
-            double t0 = now_ms();
-            for (k = 0; k < steps; ++k) pg_world_step(w);
-            ms[rep - 1] = (now_ms() - t0) / steps;
+            ms[rep - 1] = timed_steps(w, steps);
             free(mem);
             continue;
         }
