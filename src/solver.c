@@ -593,8 +593,6 @@ PG__INLINE_ROW void normal_apply(const constraint *c, velocity *va, velocity *vb
     p->normal_impulse = (pg_fix)acc;
 }
 
-/* One normal row at separation s with relative normal speed rel (measured from va, vb
- * as they are now). */
 /* The approach speed a bouncing point rebounds from (APPROACH): its relative normal
  * speed rel just before it first pushes in this step, kept until it does. */
 PG__INLINE_ROW void note_approach(const constraint *c, constraint_point *p, int64_t rel)
@@ -602,6 +600,8 @@ PG__INLINE_ROW void note_approach(const constraint *c, constraint_point *p, int6
     if (c->restitution != 0 && p->max_normal_impulse == 0) p->relative_velocity = pg__sat64(rel);
 }
 
+/* One normal row at separation s with relative normal speed rel (measured from va, vb
+ * as they are now). */
 PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft, const constraint *c, velocity *va, velocity *vb,
                                  constraint_point *p, int64_t s, int64_t rel, int use_bias)
 {
