@@ -40,6 +40,7 @@ void pg__update_sleep(pg_world *w)
     int64_t lin_tol2 = (int64_t)w->def.sleep_linear_tolerance * w->def.sleep_linear_tolerance;
     pg_fix ang_tol = w->def.sleep_angular_tolerance;
     pg_fix *min_time = (pg_fix *)(void *)w->solver_scratch; /* solver scratch is free after the solve */
+    pg_fix longest = 0; /* the longest rest of an awake body */
 
     for (i = 0; i < w->body_high; ++i) {
         pg_body *b = &w->bodies[i];
@@ -51,7 +52,11 @@ void pg__update_sleep(pg_world *w)
         } else if (b->sleep_time < PG_FIX_C(1000)) {
             b->sleep_time += dt;
         }
+        if (b->sleep_time > longest) longest = b->sleep_time;
     }
+    /* An island sleeps when its shortest rest is long enough; when even the longest is not,
+     * none can, and the islands need not be found (rain: most of the pile is moving). */
+    if (!rested_long_enough(w, longest, dt)) return;
     for (i = 0; i < w->contact_count; ++i) {
         const pg_contact *c = &w->contacts[i];
         const pg_body *a = &w->bodies[c->body_a], *b = &w->bodies[c->body_b];
