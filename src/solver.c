@@ -138,7 +138,6 @@ typedef struct constraint {
     int32_t inv_det;         /* Q8.24: 1 / (1 - e01 e10), at most 16 */
     int32_t rows_ready;      /* the rows' coefficients, friction ratios and the block are set
                                 (LAZY ROWS, in prepare_constraints) */
-    pg_fix friction;         /* the contact's, for the friction ratio */
     constraint_point p[2];
 } constraint;
 
@@ -394,7 +393,7 @@ PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
         if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
             denominator dt = row_coefficients(A, B, p->ctA, p->ctB, t, ctx->rotation, &p->ltA_x, &p->ltA_y, &p->ltB_x, &p->ltB_y,
                                               &p->gtA, &p->gtB);
-            p->friction_ratio = pg_fix_mul(c->friction, k_ratio(dt, dn));
+            p->friction_ratio = pg_fix_mul(w->contacts[c->contact].friction, k_ratio(dt, dn));
         }
     }
     setup_block(c);
@@ -930,7 +929,6 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
             if (p->normal_impulse != 0 || p->tangent_impulse != 0) held = 1;
             p->relative_velocity = 0; /* set before the point first pushes (APPROACH) */
         }
-        c->friction = ct->friction;
         c->rows_ready = 0;
         c->block = 0; /* restitution reads it: a constraint whose rows never get set never pushed */
         if (held) prepare_rows(ctx, c);
