@@ -49,7 +49,12 @@
  * it would leave lambda at 0 (a rigid or soft update of b >= 0 from 0 clamps at 0, and
  * so does the block), friction is bounded by 0 and nothing bounces, so skipping it
  * changes no bit; the coefficients are a function of the step's start whenever they are
- * computed.
+ * computed. Such a pass does not store the two velocities it loaded either, and the
+ * warm start skips the constraint whole (all its lambdas are 0): 0.7 % and 0.4 % of the
+ * awake pyramid's instructions, 0.8 % and 0.3 % of rain's. A store clamps to the row
+ * kernel's +-VELOCITY_MAX, so one skipped can differ only for a body already past it,
+ * an angular velocity just integrated from a saturated torque (the kernel's bounds
+ * allow that on entry, and the next step's set-up clamps it).
  *
  * APPROACH: the speed a point bounces back from is its relative normal speed just before
  * it first pushes in the step, in the substep where the gap closes, not the one at the
@@ -677,7 +682,7 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
         int64_t s = normal_separation(c, A, B, first, use_bias), rel = normal_speed(c, &va, &vb, first);
         if (!c->rows_ready) {
             /* nothing held (LAZY ROWS): and while nothing is wanted, nothing moves */
-            if (row_idle(ctx, soft, s, rel, use_bias)) goto store;
+            if (row_idle(ctx, soft, s, rel, use_bias)) return; /* va, vb untouched: nothing to store */
             prepare_rows(ctx, c);
         }
         solve_normal(ctx, soft, c, &va, &vb, first, s, rel, use_bias);
@@ -695,7 +700,7 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
         rel0 = normal_speed(c, &va, &vb, first);
         rel1 = normal_speed(c, &va, &vb, second);
         if (!c->rows_ready) {
-            if (row_idle(ctx, soft, s0, rel0, use_bias) && row_idle(ctx, soft, s1, rel1, use_bias)) goto store;
+            if (row_idle(ctx, soft, s0, rel0, use_bias) && row_idle(ctx, soft, s1, rel1, use_bias)) return;
             prepare_rows(ctx, c);
         }
         if (!c->block || !solve_normal_pair(ctx, soft, c, &va, &vb, first, second, s0, s1, rel0, rel1, use_bias, order)) {
@@ -714,16 +719,20 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
         solve_friction(&va, &vb, first, t);
         if (second != NULL) solve_friction(&va, &vb, second, t);
     }
-store:
     store_velocity(A, &va);
     store_velocity(B, &vb);
 }
 
 PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
 {
-    solver_body *A = &bodies[c->a], *B = &bodies[c->b];
-    velocity va = load_velocity(A), vb = load_velocity(B);
+    solver_body *A, *B;
+    velocity va, vb;
     int32_t k;
+    if (!c->rows_ready) return; /* nothing held, and nothing wanted since (LAZY ROWS) */
+    A = &bodies[c->a];
+    B = &bodies[c->b];
+    va = load_velocity(A);
+    vb = load_velocity(B);
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
         if (p->normal_impulse == 0 && p->tangent_impulse == 0) continue; /* nothing to apply */
