@@ -33,6 +33,42 @@ static int rested_long_enough(const pg_world *w, pg_fix rested, pg_fix dt)
     return steps >= needed;
 }
 
+/* An upper bound on how far any point of body b lies from its centre of mass (Q16.16 m):
+ * the farthest vertex of its shapes plus that shape's radius, the square root rounded up. */
+static int64_t body_extent(const pg_world *w, const pg_body *b)
+{
+    int64_t extent = 0;
+    uint32_t s;
+    for (s = b->first_shape; s != PG_NULL_INDEX; s = w->shapes[s].next) {
+        const pg_geom *g = &w->shapes[s].local;
+        int32_t k;
+        for (k = 0; k < g->count; ++k) {
+            /* body-frame coordinates within the envelope (50 m): |d| < 2^24, d^2 < 2^49 */
+            int64_t dx = (int64_t)g->vertices[k].x - b->local_center.x, dy = (int64_t)g->vertices[k].y - b->local_center.y;
+            int64_t e = (int64_t)pg_isqrt64((uint64_t)(dx * dx + dy * dy)) + 1 + g->radius;
+            if (e > extent) extent = e;
+        }
+    }
+    return extent;
+}
+
+/* Whether body b is at rest: its centre moves no faster than the linear tolerance, and
+ * either it turns no faster than the angular tolerance or no point of it moves faster
+ * than the linear tolerance (|v| + extent |w|, Box2D v3's measure). The second clause
+ * lets small round bodies rest: a ball of radius 0.08 m rolling at 6 mm/s turns at
+ * 0.075 rad/s, twice the angular tolerance, and with nothing to slow a rolling ball it
+ * kept its whole pile awake. It is evaluated only when the first fails (rarely). */
+static int body_at_rest(const pg_world *w, const pg_body *b, int64_t lin_tol2, pg_fix ang_tol)
+{
+    int64_t v2 = (int64_t)b->v.x * b->v.x + (int64_t)b->v.y * b->v.y, turn, left;
+    if ((b->flags & PG_BODY_FLAG_ALLOW_SLEEP) == 0 || v2 > lin_tol2) return 0;
+    if (b->w <= ang_tol && b->w >= -ang_tol) return 1;
+    /* extent < 2^25 and |w| < 2^31: the product fits */
+    turn = pg__round_shift64(body_extent(w, b) * (b->w < 0 ? -(int64_t)b->w : (int64_t)b->w), 16);
+    left = (int64_t)w->def.sleep_linear_tolerance - turn;
+    return left >= 0 && v2 <= left * left;
+}
+
 void pg__update_sleep(pg_world *w)
 {
     uint32_t *parent = w->island_parent, i;
@@ -46,8 +82,7 @@ void pg__update_sleep(pg_world *w)
         pg_body *b = &w->bodies[i];
         parent[i] = i;
         if (!pg__body_is_active(b)) continue;
-        if ((b->flags & PG_BODY_FLAG_ALLOW_SLEEP) == 0 ||
-            (int64_t)b->v.x * b->v.x + (int64_t)b->v.y * b->v.y > lin_tol2 || b->w > ang_tol || b->w < -ang_tol) {
+        if (!body_at_rest(w, b, lin_tol2, ang_tol)) {
             b->sleep_time = 0;
         } else if (b->sleep_time < PG_FIX_C(1000)) {
             b->sleep_time += dt;

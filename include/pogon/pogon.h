@@ -119,7 +119,11 @@ typedef struct pg_world_def {
     pg_fix restitution_threshold; /* approach speeds below this do not bounce, default 1 m/s */
     pg_fix max_linear_speed;    /* cap, default 400 m/s, counted in stats.speed_clamps */
     pg_fix sleep_linear_tolerance;  /* default 0.05 m/s */
-    pg_fix sleep_angular_tolerance; /* default 2 degrees/s (0.0349 rad/s) */
+    pg_fix sleep_angular_tolerance; /* default 2 degrees/s (0.0349 rad/s). A body rests when
+                                   its centre moves no faster than the linear tolerance and
+                                   either it turns no faster than the angular one or no
+                                   point of it moves faster than the linear one
+                                   (|v| + extent |w|: a small ball rolling slowly rests) */
     pg_fix time_to_sleep;       /* seconds at rest before an island sleeps, default 0.5;
                                    counted in steps, to the nearest (30 at 60 Hz) */
     uint32_t max_bodies;        /* capacities, default 1024 / 2048 / 4096 */

@@ -739,6 +739,88 @@ static void test_sleeps_after_time_to_sleep_in_whole_steps(void **state)
     }
 }
 
+/* A body rests when its centre moves no faster than sleep_linear_tolerance (0.05 m/s) and
+ * either it turns no faster than sleep_angular_tolerance (2 degrees/s) or no point of it
+ * moves faster than 0.05 m/s: |v| + extent |w| <= 0.05, extent the farthest point of its
+ * shapes from its centre of mass. Checked in free flight (no gravity, nothing touching:
+ * v and w stay exactly as set), each case for 2 s, against when it must fall asleep
+ * (after 30 steps) or that it never may. */
+static void test_sleep_counts_how_fast_the_surface_moves(void **state)
+{
+    static const struct {
+        const char *what;
+        int ball;         /* 1: a ball of radius 0.08 m (extent 0.08 m); 0: a 2 m box (1.414 m) */
+        double vx, w;     /* m/s, rad/s */
+        int sleeps;
+    } cases[] = {
+        {"ball r 0.08 m, v 0.02 m/s, w 0.25 rad/s: surface 0.04 m/s", 1, 0.02, 0.25, 1},
+        {"ball r 0.08 m, v 0.02 m/s, w 0.35 rad/s: surface 0.048 m/s", 1, 0.02, 0.35, 1},
+        {"ball r 0.08 m, v 0.02 m/s, w 0.40 rad/s: surface 0.052 m/s", 1, 0.02, 0.40, 0},
+        {"ball r 0.08 m, v 0.03 m/s, w 0.375 rad/s (rolling): surface 0.06 m/s", 1, 0.03, -0.375, 0},
+        {"ball r 0.08 m, v 0.06 m/s, w 0: centre too fast", 1, 0.06, 0.0, 0},
+        {"box 2 m, v 0, w 0.03 rad/s: below 2 degrees/s", 0, 0.0, 0.03, 1},
+        {"box 2 m, v 0, w 0.034 rad/s: below 2 degrees/s, corners at 0.048 m/s", 0, 0.0, -0.034, 1},
+        {"box 2 m, v 0, w 0.036 rad/s: above 2 degrees/s, corners at 0.051 m/s", 0, 0.0, 0.036, 0},
+        {"box 2 m, v 0.04 m/s, w 0.01 rad/s: corners up to 0.054 m/s but below 2 degrees/s", 0, 0.04, 0.01, 1},
+    };
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        pg_world_def d = base_def(PG_EFFECTS_ALL);
+        test_world t;
+        pg_shape_def sd = pg_default_shape_def();
+        pg_body_def bd = dynamic_at(0, 0);
+        pg_body_id b;
+        int i, slept_at = 0;
+        d.gravity = pg_v2(0, 0);
+        t = make_world_def(&d);
+        bd.linear_velocity = pg_v2(fx(cases[k].vx), 0);
+        bd.angular_velocity = fx(cases[k].w);
+        if (cases[k].ball) assert_int_equal(pg_make_ball(t.w, &bd, &sd, fx(0.08), &b), PG_OK);
+        else assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_C(2), PG_FIX_C(2), &b), PG_OK);
+        for (i = 1; i <= 120 && slept_at == 0; ++i) {
+            assert_int_equal(pg_world_step(t.w), PG_OK);
+            if (!pg_body_is_awake(t.w, b)) slept_at = i;
+        }
+        print_message("%s: %s\n", cases[k].what, slept_at ? "asleep after 30 steps" : "awake after 2 s");
+        if (cases[k].sleeps && slept_at != 30) fail_msg("%s: must sleep after step 30, slept after %d (0: never)", cases[k].what, slept_at);
+        if (!cases[k].sleeps && slept_at != 0) fail_msg("%s: must stay awake, slept after step %d", cases[k].what, slept_at);
+        free_world(&t);
+    }
+}
+
+/* A small ball rolling slowly on the ground rolls on: nothing slows a rolling ball (no
+ * rolling resistance), and at 0.02 m/s its 0.25 rad/s is seven times the angular
+ * tolerance, so before its surface speed counted it kept itself, and any pile it
+ * touched, awake for ever. Its surface moves at most 0.04 m/s: it falls asleep within a
+ * second, rolling at the speed it was given until then (within 1 %), and upright on the
+ * ground. */
+static void test_slowly_rolling_ball_sleeps(void **state)
+{
+    test_world t = make_world(PG_EFFECTS_ALL);
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_def bd = dynamic_at(0, 0.08);
+    pg_body_id ball;
+    int i, slept_at = 0;
+    double v_before = 0.0;
+    (void)state;
+    make_ground(t.w, sd.friction, 0);
+    bd.linear_velocity = pg_v2(fx(0.02), 0);
+    bd.angular_velocity = fx(-0.25); /* rolling towards +x */
+    assert_int_equal(pg_make_ball(t.w, &bd, &sd, fx(0.08), &ball), PG_OK);
+    for (i = 1; i <= 120 && slept_at == 0; ++i) {
+        v_before = fd(pg_body_linear_velocity(t.w, ball).x);
+        assert_int_equal(pg_world_step(t.w), PG_OK);
+        if (!pg_body_is_awake(t.w, ball)) slept_at = i;
+    }
+    print_message("ball r 0.08 m rolling at 0.02 m/s: asleep after step %d (0: not in 2 s), rolling at %.5f m/s just before, "
+                  "centre %.5f m above the ground\n", slept_at, v_before, fd(pg_body_position(t.w, ball).y));
+    if (slept_at == 0 || slept_at > 60) fail_msg("the slowly rolling ball is still awake after step %d", i - 1);
+    expect_near(v_before, 0.02, 0.0002, "rolling speed just before it fell asleep (m/s)");
+    expect_near(fd(pg_body_position(t.w, ball).y), 0.08, 0.002, "height of the ball's centre (m)");
+    free_world(&t);
+}
+
 /* ---- kinematic ----------------------------------------------------------------------------------- */
 static void test_kinematic_moves_at_its_velocity(void **state)
 {
@@ -1301,6 +1383,8 @@ int main(void)
         cmocka_unit_test(test_wake_by_set_velocity),
         cmocka_unit_test(test_sleeping_off_never_sleeps),
         cmocka_unit_test(test_sleeps_after_time_to_sleep_in_whole_steps),
+        cmocka_unit_test(test_sleep_counts_how_fast_the_surface_moves),
+        cmocka_unit_test(test_slowly_rolling_ball_sleeps),
         cmocka_unit_test(test_kinematic_moves_at_its_velocity),
         cmocka_unit_test(test_kinematic_pushes_dynamic),
         cmocka_unit_test(test_determinism),
