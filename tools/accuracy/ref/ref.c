@@ -74,6 +74,7 @@ typedef struct spoint {
     vec lnA, lnB, ltA, ltB;     /* kA n, kB n, kA t, kB t */
     double gnA, gnB, gtA, gtB;
     double friction_ratio, relative_velocity;
+    double approach_start, approach_accel; /* pogon's APPROACH: at the step's start, and gravity's part per second */
     double ln, lt, max_ln;
 } spoint;
 
@@ -634,7 +635,7 @@ static vec anchor_now(const sbody *b, vec r, int round)
     return v2(b->c.x - b->c0.x + b->dqc * r.x - b->dqs * r.y, b->c.y - b->c0.y + b->dqs * r.x + b->dqc * r.y);
 }
 
-typedef struct step_ctx { double n; softness soft, soft_static; double push_max; int friction; } step_ctx;
+typedef struct step_ctx { double n; softness soft, soft_static; double push_max; int friction; double t_end; /* the current substep's end, s */ } step_ctx;
 
 /* The normal row of point p at separation s: b = relative speed + bias (what the row
  * drives to 0) and whether it is soft. */
@@ -657,10 +658,14 @@ static double normal_update(const softness *soft, const spoint *p, double y, int
 }
 
 /* rel: the relative normal speed the row was solved from; a point's approach speed for
- * restitution is the one just before it first pushes in the step (pogon's APPROACH). */
-static void normal_apply(sbody *A, sbody *B, spoint *p, double acc, double rel)
+ * restitution is, as in pogon (APPROACH), the less of the speed just before it first
+ * pushes in the step and the step's start speed plus what gravity added since. */
+static void normal_apply(const step_ctx *ctx, sbody *A, sbody *B, spoint *p, double acc, double rel)
 {
-    if (p->max_ln == 0) p->relative_velocity = rel;
+    if (p->max_ln == 0) {
+        double external = p->approach_start + p->approach_accel * ctx->t_end;
+        p->relative_velocity = rel > external ? rel : external;
+    }
     if (acc < 0) acc = 0;
     apply(A, B, acc - p->ln, p->lnA, p->lnB, p->gnA, p->gnB);
     p->ln = acc;
@@ -707,8 +712,8 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         double det = 1 - c->e01 * c->e10, y0 = (b0 - c->e01 * b1) / det, y1 = (b1 - c->e10 * b0) / det;
         double acc0 = normal_update(soft, p0, y0, soft0), acc1 = normal_update(soft, p1, y1, soft1);
         if (acc0 >= 0 && acc1 >= 0) {
-            normal_apply(A, B, p0, acc0, rel0);
-            normal_apply(A, B, p1, acc1, rel1);
+            normal_apply(ctx, A, B, p0, acc0, rel0);
+            normal_apply(ctx, A, B, p1, acc1, rel1);
             done = 1;
         }
     }
@@ -716,7 +721,7 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         int i = order ? c->count - 1 - k : k, is_soft;
         spoint *p = &c->p[i];
         double rel = rel_speed(A, B, n, p->cnA, p->cnB), b = normal_target(ctx, soft, s[i], rel, use_bias, &is_soft);
-        normal_apply(A, B, p, normal_update(soft, p, b, is_soft), rel);
+        normal_apply(ctx, A, B, p, normal_update(soft, p, b, is_soft), rel);
     }
     if (ctx->friction) {
         for (k = 0; k < c->count; ++k) {
@@ -803,11 +808,18 @@ void ref_step(ref_world *w)
             p->lt = d->friction ? cp->lt : 0;
             p->max_ln = 0;
             p->relative_velocity = 0; /* set before the point first pushes (normal_apply) */
+            {
+                const sbody *sa = sb_of(w, c->a), *sbb = sb_of(w, c->b);
+                vec ga = sa->dynamic ? v2(d->gravity_x, d->gravity_y) : v2(0, 0), gb = sbb->dynamic ? v2(d->gravity_x, d->gravity_y) : v2(0, 0);
+                p->approach_start = rel_speed(sa, sbb, c->n, p->cnA, p->cnB);
+                p->approach_accel = vdot(c->n, vsub(gb, ga));
+            }
         }
         setup_block(c);
     }
     for (sub = 0; sub < d->substeps; ++sub) {
         int order = sub & 1;
+        ctx.t_end = h * (sub + 1);
         for (i = 0; i < w->count; ++i) {
             sbody *s = &w->sbodies[i];
             if (!s->dynamic) continue;
