@@ -620,22 +620,29 @@ static void test_speed_cap(void **state)
 }
 
 /* ---- sleeping ------------------------------------------------------------------------------------ */
+/* Step until body b falls asleep, at most max_steps: the step after which it slept, or 0. */
+static int steps_until_asleep(pg_world *w, pg_body_id b, int max_steps)
+{
+    int i;
+    for (i = 1; i <= max_steps; ++i) {
+        assert_int_equal(pg_world_step(w), PG_OK);
+        if (!pg_body_is_awake(w, b)) return i;
+    }
+    return 0;
+}
+
 static void test_sleep_and_wake_by_contact(void **state)
 {
     test_world t = make_world(PG_EFFECTS_ALL);
     pg_shape_def sd = pg_default_shape_def();
     pg_body_def bd = dynamic_at(0, 0.5);
     pg_body_id box, ball;
-    int i, slept_at = -1, woke = 0;
+    int i, woke = 0;
     (void)state;
     make_ground(t.w, sd.friction, 0);
     assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &box), PG_OK);
     assert_int_equal(pg_body_is_awake(t.w, box), 1);
-    for (i = 1; i <= 120 && slept_at < 0; ++i) {
-        assert_int_equal(pg_world_step(t.w), PG_OK);
-        if (!pg_body_is_awake(t.w, box)) slept_at = i;
-    }
-    if (slept_at < 0) {
+    if (steps_until_asleep(t.w, box, 120) == 0) {
         print_error("a box resting on the ground is still awake after 2 s (v = %.6g m/s, w = %.6g rad/s)\n", speed(t.w, box),
                     fd(pg_body_angular_velocity(t.w, box)));
         fail();
@@ -771,17 +778,14 @@ static void test_sleep_counts_how_fast_the_surface_moves(void **state)
         pg_shape_def sd = pg_default_shape_def();
         pg_body_def bd = dynamic_at(0, 0);
         pg_body_id b;
-        int i, slept_at = 0;
+        int slept_at;
         d.gravity = pg_v2(0, 0);
         t = make_world_def(&d);
         bd.linear_velocity = pg_v2(fx(cases[k].vx), 0);
         bd.angular_velocity = fx(cases[k].w);
         if (cases[k].ball) assert_int_equal(pg_make_ball(t.w, &bd, &sd, fx(0.08), &b), PG_OK);
         else assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_C(2), PG_FIX_C(2), &b), PG_OK);
-        for (i = 1; i <= 120 && slept_at == 0; ++i) {
-            assert_int_equal(pg_world_step(t.w), PG_OK);
-            if (!pg_body_is_awake(t.w, b)) slept_at = i;
-        }
+        slept_at = steps_until_asleep(t.w, b, 120);
         print_message("%s: %s\n", cases[k].what, slept_at ? "asleep after 30 steps" : "awake after 2 s");
         if (cases[k].sleeps && slept_at != 30) fail_msg("%s: must sleep after step 30, slept after %d (0: never)", cases[k].what, slept_at);
         if (!cases[k].sleeps && slept_at != 0) fail_msg("%s: must stay awake, slept after step %d", cases[k].what, slept_at);
