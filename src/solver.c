@@ -609,8 +609,6 @@ PG__INLINE_ROW void normal_apply(const constraint *c, velocity *va, velocity *vb
     p->normal_impulse = (pg_fix)acc;
 }
 
-/* The approach speed a bouncing point rebounds from (APPROACH): its relative normal
- * speed rel just before it first pushes in this step, kept until it does. */
 /* The approach speed of a point that first pushes now, at relative normal speed rel:
  * the less negative of rel and what the speed would be had no contact acted since the
  * step's start (APPROACH). Out of line: it runs once per bouncing point and step. */
@@ -621,6 +619,8 @@ PG__NOINLINE void record_approach(const step_context *ctx, constraint_point *p, 
     p->relative_velocity = pg__sat64(rel > external ? rel : external);
 }
 
+/* The approach speed a bouncing point rebounds from (APPROACH), recorded just before it
+ * first pushes in this step and kept from then on. */
 PG__INLINE_ROW void note_approach(const step_context *ctx, const constraint *c, constraint_point *p, int64_t rel)
 {
     if (c->restitution != 0 && p->max_normal_impulse == 0) record_approach(ctx, p, rel);
