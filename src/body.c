@@ -270,6 +270,7 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index)
     b->local_center = pg_v2_zero();
     if (b->type != PG_BODY_DYNAMIC) {
         b->center = b->origin;
+        pg__body_set_turn_extents(world, body_index);
         return;
     }
     for (s = b->first_shape; s != PG_NULL_INDEX && n < 64; s = world->shapes[s].next) {
@@ -287,6 +288,7 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index)
     }
     pg__body_set_inverse_mass(b);
     b->center = pg_v2_add(b->origin, pg_rot_apply(b->rot, b->local_center));
+    pg__body_set_turn_extents(world, body_index);
 }
 
 void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
@@ -305,8 +307,20 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
     }
     for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
         pg_aabb box;
+        int64_t turn_radius;
         pg__geom_place_slot(&world->shapes[s].local, b->origin, b->rot, &world->world_geoms[s]);
         box = pg_geom_aabb(&world->world_geoms[s]);
+        turn_radius = b->w != 0 && b->turn_reach != 0 ? pg__turn_box_radius(world, b, &world->shapes[s]) : -1;
+        if (turn_radius >= 0) {
+            /* fast-turning (continuous.c): the shape may face any way during the step, and
+             * its time of impact is looked for only against the pairs found here */
+            pg_fix lx = pg__sat64((int64_t)b->center.x - turn_radius), hx = pg__sat64((int64_t)b->center.x + turn_radius);
+            pg_fix ly = pg__sat64((int64_t)b->center.y - turn_radius), hy = pg__sat64((int64_t)b->center.y + turn_radius);
+            if (lx < box.lo.x) box.lo.x = lx;
+            if (ly < box.lo.y) box.lo.y = ly;
+            if (hx > box.hi.x) box.hi.x = hx;
+            if (hy > box.hi.y) box.hi.y = hy;
+        }
         /* saturating: a body that has flown out of the envelope reaches the edge of the
          * Q16.16 range, where a plain add would overflow */
         box.lo.x = pg__sat64((int64_t)box.lo.x - margin - (b->v.x < 0 ? sweep_x : 0));

@@ -19,6 +19,9 @@ static int shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb)
     return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
 }
 
+/* The same for continuous.c; the merge below keeps its inlined copy. */
+int pg__shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb) { return shapes_should_collide(w, sa, sb); }
+
 /* Geometric mean, the usual rule: one slippery surface makes the pair slippery. */
 static pg_fix mix_friction(pg_fix a, pg_fix b) { return pg_fix_sqrt(pg_fix_mul(a, b)); }
 /* The bouncier surface wins. */

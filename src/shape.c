@@ -274,6 +274,7 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
         for (k = geometry->count; k < PG_MAX_POLYGON_VERTICES; ++k) s->geometry.vertices[k] = pg_v2_zero();
     }
     pg__shape_build_local(geometry, &s->local);
+    pg__shape_set_extents(s);
     s->density = def->density;
     s->friction = def->friction;
     s->restitution = def->restitution;

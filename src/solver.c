@@ -110,6 +110,8 @@ typedef struct solver_body {
                              lasts at most 1 s), fits */
     pg_angle a0, a;
     pg_rot dq;            /* rotation from a0 to a; kept only when turns_anchors */
+    int64_t turn;         /* radians turned since the step's start, Q32 (|w| <= 2^29 Q16 and
+                             h <= 2^32 Q32 s, so each substep's w h fits; 16 of them too) */
     int32_t turns_anchors;/* some contact anchor on this body turns with it (not a centred
                              circle): only then is dq needed */
     pg_vec2 accel;        /* from gravity and force, m/s^2 */
@@ -167,10 +169,17 @@ static size_t constraints_offset(uint32_t max_bodies)
     return (sizeof(solver_body) * ((size_t)max_bodies + 1u) + 7u) & ~(size_t)7u;
 }
 
+/* Byte offset of the sweeps of fast-turning bodies (continuous.c): after the constraints
+ * and the list of active bodies, rounded up to 8 (a sweep holds an int64). */
+static size_t sweeps_offset(const pg_world_def *def)
+{
+    return (constraints_offset(def->max_bodies) + sizeof(constraint) * def->max_contacts + sizeof(uint32_t) * def->max_bodies + 7u) &
+           ~(size_t)7u;
+}
+
 size_t pg__solver_scratch_bytes(const pg_world_def *def)
 {
-    return constraints_offset(def->max_bodies) + sizeof(constraint) * def->max_contacts +
-           sizeof(uint32_t) * def->max_bodies + 64u;
+    return sweeps_offset(def) + (sizeof(pg_sweep) + sizeof(uint32_t)) * def->max_bodies + 64u;
 }
 
 /* Box2D v3's b2MakeSoft in fixed point: omega = 2 pi hz, a1 = 2 zeta + h omega,
@@ -983,7 +992,9 @@ void pg__solve(pg_world *w)
     uint32_t dummy = w->def.max_bodies; /* the static side of a contact */
     constraint *cons = (constraint *)(void *)(scratch + constraints_offset(w->def.max_bodies));
     uint32_t *active = (uint32_t *)(void *)((unsigned char *)cons + sizeof(constraint) * w->def.max_contacts);
-    uint32_t n_active = 0, n_cons = 0, i, sub;
+    pg_sweep *sweeps = (pg_sweep *)(void *)(scratch + sweeps_offset(&w->def));
+    uint32_t n_active = 0, n_cons = 0, n_fast = 0, i, sub;
+    int sweeping;
     step_context ctx;
     const uint32_t effects = w->def.effects;
     const int rotation = (effects & PG_EFFECT_ROTATION) != 0;
@@ -1011,6 +1022,7 @@ void pg__solve(pg_world *w)
         d->c0 = d->c = d->dp = pg_v2_zero();
         d->a0 = d->a = 0;
         d->dq = pg_rot_identity();
+        d->turn = 0;
         d->turns_anchors = 0;
         d->accel = pg_v2_zero(); /* read for the approach speed (APPROACH) */
         d->alpha = 0;
@@ -1030,6 +1042,7 @@ void pg__solve(pg_world *w)
         sb->dp = pg_v2_zero();
         sb->a0 = sb->a = b->angle;
         sb->dq = pg_rot_identity();
+        sb->turn = 0;
         sb->turns_anchors = 0;
         sb->accel = pg_v2_zero();
         sb->alpha = 0;
@@ -1077,6 +1090,7 @@ void pg__solve(pg_world *w)
             sb->dp = pg_v2((pg_fix)((int64_t)sb->c.x - sb->c0.x), (pg_fix)((int64_t)sb->c.y - sb->c0.y));
             if (rotation && sb->w != 0) {
                 sb->a += angle_step(sb->w, ctx.angle_per_w);
+                sb->turn += ((int64_t)sb->w * ctx.h_q32) >> 16; /* for continuous.c's sweep */
                 if (sb->turns_anchors) sb->dq = pg_rot_from_angle(sb->a - sb->a0); /* a ball's is never read */
             }
         }
@@ -1097,10 +1111,13 @@ void pg__solve(pg_world *w)
         }
     }
 
-    /* write back */
+    /* write back, and the sweeps of bodies that turned too far for their speculative
+     * contacts (continuous.c) */
+    sweeping = rotation && (effects & PG_EFFECT_CONTINUOUS) != 0;
     for (i = 0; i < n_active; ++i) {
         pg_body *b = &w->bodies[active[i]];
         const solver_body *sb = &bodies[active[i]];
+        pg_fix w0 = b->w;
         b->v = sb->v;
         if (rotation) b->w = sb->w; /* rotation off pauses spin; it does not erase it */
         b->center = sb->c;
@@ -1110,5 +1127,16 @@ void pg__solve(pg_world *w)
         }
         b->origin = pg_v2_sub(b->center, pg_rot_apply(b->rot, b->local_center));
         b->force_x = b->force_y = b->torque = 0;
+        if (sweeping && b->turn_reach != 0 && (sb->turn != 0 || w0 != 0) && b->type == PG_BODY_DYNAMIC) {
+            pg_sweep *s = &sweeps[n_fast];
+            s->body = active[i];
+            s->c0 = sb->c0;
+            s->c1 = sb->c;
+            s->a0 = sb->a0;
+            s->turn = pg__turn_of_step(sb->a0, sb->a, sb->turn);
+            if (pg__sweep_is_fast(w, s, w0)) ++n_fast;
+        }
     }
+    if (n_fast > 0) pg__sweep_fast_turns(w, sweeps, n_fast, (uint32_t *)(void *)(sweeps + w->def.max_bodies));
 }
+

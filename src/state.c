@@ -613,7 +613,10 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                     if (sh.density < 0 || sh.density > PG_FIX_C(100) || sh.friction < 0 || sh.friction > PG_FIX_C(10) ||
                         sh.restitution < 0 || sh.restitution > PG_FIX_ONE)
                         invalid(r, at, "shape.material");
-                    if (w != NULL) pg__shape_build_local(&sh.geometry, &sh.local);
+                    if (w != NULL && r->error_field == NULL) {
+                        pg__shape_build_local(&sh.geometry, &sh.local);
+                        pg__shape_set_extents(&sh); /* derived, like local: not stored */
+                    }
                 }
                 if (r->shape_owner != NULL) {
                     r->shape_owner[i] = used ? sh.body : PG_NULL_INDEX;
@@ -651,6 +654,9 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                 w->shape_high = n;
                 for (i = 0; i < n; ++i) count += w->shapes[i].used ? 1u : 0u;
                 w->shape_count = count;
+                /* derived from the shapes and the bodies' centres of mass: not stored */
+                for (i = 0; i < w->body_high; ++i)
+                    if ((w->bodies[i].flags & PG_BODY_FLAG_USED) != 0) pg__body_set_turn_extents(w, i);
             }
         } else if (k == PG_SECTION_CONTACTS) {
             uint32_t prev_a = 0, prev_b = 0;

@@ -62,6 +62,11 @@ typedef struct pg_body {
     int64_t mass, inertia;            /* Q32.32 kg, Q28.36 kg m^2 */
     int64_t inv_mass, inv_inertia;    /* Q25.38 (1/kg, 1/(kg m^2)); 0 for infinite */
     pg_fix sleep_time;
+    /* derived from the shapes and local_center (pg__body_set_turn_extents), for continuous
+     * collision of turning bodies: how far any shape's core reaches from the centre of
+     * mass (an L1 bound; 0 when turning moves no surface, as for a centred circle) and the
+     * thinnest shape's inner extent */
+    pg_fix turn_reach, inner_extent;
     uint32_t island;         /* while asleep: the lowest body index of its island */
     uint32_t first_shape;    /* shapes of the body, a list in creation order */
     uint32_t shape_count;
@@ -77,6 +82,10 @@ typedef struct pg_shape {
     pg_geom local;           /* collision form, body frame */
     pg_fix density, friction, restitution;
     uint32_t category, mask;
+    /* derived from `local` (pg__shape_set_extents), for continuous collision of turning
+     * bodies: the farthest core vertex from local.centroid (0 for a circle) and the
+     * thinnest extent, the centroid's distance to the nearest face plus the radius */
+    pg_fix turn_outer, inner_extent;
 } pg_shape;
 
 typedef struct pg_contact_point {
@@ -183,6 +192,8 @@ pg_result pg__validate_geometry(const pg_geometry *g);             /* what pg_sh
 
 /* contact.c */
 pg_result pg__update_contacts(pg_world *world);
+/* Whether shapes sa and sb may touch: different bodies, one dynamic, filters agree. */
+int pg__shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb);
 /* When no body is awake and no geometry is dirty, pg__update_contacts keeps every contact
  * as it is unless a shape has gone or a filter has changed since: this says it would. */
 int pg__contacts_at_rest(const pg_world *world);
@@ -192,6 +203,35 @@ void pg__refresh_contact_materials(pg_world *world, uint32_t body_index); /* aft
 /* solver.c */
 size_t pg__solver_scratch_bytes(const pg_world_def *def);
 void pg__solve(pg_world *world);
+
+/* continuous.c: time of impact for bodies that turn too far in a step for their
+ * speculative contacts (see the file's header) */
+typedef struct pg_sweep {
+    uint32_t body;
+    pg_vec2 c0, c1;     /* centre of mass at the step's start and end */
+    pg_angle a0;        /* angle at the start */
+    int64_t turn;       /* the step's turn in binary-angle units, unwrapped (pg__turn_of_step) */
+    pg_fix fraction;    /* earliest time of impact, Q16.16 of the step; PG_FIX_ONE: none */
+} pg_sweep;
+void pg__shape_set_extents(pg_shape *s); /* whenever s->local is built */
+void pg__body_set_turn_extents(pg_world *w, uint32_t body); /* whenever its shapes or local_center change */
+/* The radius about the centre of mass that shape s of body b sweeps while it turns in the
+ * coming step, when b is fast-turning at its angular velocity; -1 when it is not (then
+ * its broadphase box needs no more than its pose). */
+int64_t pg__turn_box_radius(const pg_world *w, const pg_body *b, const pg_shape *s);
+/* The turn from a0 to a1 in binary-angle units, unwrapped: the whole turns are taken from
+ * `radians` (Q32), the solver's sum of w h over the substeps. Beyond 8 turns either way,
+ * a value past PG__MAX_TURN: such a body is not swept. */
+int64_t pg__turn_of_step(pg_angle a0, pg_angle a1, int64_t radians);
+/* Whether the body of sweep s turned too far for its speculative contacts in the step,
+ * or would have at w0, its angular velocity at the step's start (a spin its contacts
+ * stopped in the first substep: the contacts were made for the features facing at the
+ * start, and a turning body's are the wrong ones). */
+int pg__sweep_is_fast(const pg_world *w, const pg_sweep *s, pg_fix w0);
+/* Put each swept body back at its earliest time of impact with a static shape whose
+ * broadphase box its own overlapped in this step (w->pairs, still this step's after the
+ * solve). sweep_of_body: scratch of body_high entries. */
+void pg__sweep_fast_turns(pg_world *w, pg_sweep *sweeps, uint32_t n, uint32_t *sweep_of_body);
 
 /* island.c */
 void pg__update_sleep(pg_world *world);

@@ -104,7 +104,9 @@ typedef struct pg_world pg_world;
 #define PG_EFFECT_DAMPING     (1u << 4) /* linear and angular damping */
 #define PG_EFFECT_SLEEPING    (1u << 5) /* resting islands fall asleep and cost nothing */
 #define PG_EFFECT_CONTINUOUS  (1u << 6) /* fast bodies sweep their path within the substeps:
-                                           speculative contacts so they cannot tunnel */
+                                           speculative contacts so they cannot tunnel; a
+                                           body turning too far for those is put back at
+                                           its time of impact with static shapes */
 #define PG_EFFECTS_ALL        0x7Fu
 
 /* ---- world ---------------------------------------------------------------------------- */
