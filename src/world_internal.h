@@ -212,6 +212,7 @@ typedef struct pg_sweep {
     pg_angle a0;        /* angle at the start */
     int64_t turn;       /* the step's turn in binary-angle units, unwrapped (pg__turn_of_step) */
     pg_fix fraction;    /* earliest time of impact, Q16.16 of the step; PG_FIX_ONE: none */
+    int32_t moved;      /* c1 was moved: a core circle was held at a surface */
 } pg_sweep;
 void pg__shape_set_extents(pg_shape *s); /* whenever s->local is built */
 void pg__body_set_turn_extents(pg_world *w, uint32_t body); /* whenever its shapes or local_center change */

@@ -509,7 +509,9 @@ typedef struct spin_throw {
     double depth; /* deepest corner past the near face (x = 0) in box sizes */
 } spin_throw;
 
-static spin_throw throw_spinning_box(uint32_t effects, double size, double speed, double spin, double start)
+enum { SPIN_SQUARE, SPIN_PLANK, SPIN_CAPSULE, SPIN_TRIANGLE };
+
+static spin_throw throw_spinning_body(int kind, uint32_t effects, double size, double speed, double spin, double start)
 {
     const double wall = 0.1;
     pg_world_def d = def_with(effects & ~PG_EFFECT_GRAVITY, 4, 4, 16);
@@ -527,7 +529,12 @@ static spin_throw throw_spinning_box(uint32_t effects, double size, double speed
     bd = dynamic_at(start, 0.0);
     bd.linear_velocity = pg_v2(fx(speed), 0);
     bd.angular_velocity = fx(spin);
-    assert_int_equal(pg_make_box(t.w, &bd, &sd, fx(size), fx(size), &box), PG_OK);
+    switch (kind) {
+    case SPIN_SQUARE: assert_int_equal(pg_make_box(t.w, &bd, &sd, fx(size), fx(size), &box), PG_OK); break;
+    case SPIN_PLANK: assert_int_equal(pg_make_box(t.w, &bd, &sd, fx(size), fx(size / 6.0), &box), PG_OK); break;
+    case SPIN_CAPSULE: assert_int_equal(pg_make_capsule(t.w, &bd, &sd, fx(size), fx(size / 8.0), &box), PG_OK); break;
+    default: assert_int_equal(pg_make_triangle(t.w, &bd, &sd, fx(size / 1.5), &box), PG_OK); break;
+    }
     r.through = r.paused = 0;
     r.depth = -1e9;
     last = pg_body_position(t.w, box);
@@ -541,7 +548,7 @@ static spin_throw throw_spinning_box(uint32_t effects, double size, double speed
         x = fd(p.x);
         a = (double)(int32_t)pg_body_angle(t.w, box) * (2.0 * PGT_PI / 4294967296.0);
         if (fabs(fd(p.y)) < 10.0 - size) { /* level with the wall */
-            for (c = 0; c < 4; ++c) {
+            for (c = 0; c < 4 && kind == SPIN_SQUARE; ++c) {
                 double corner = x + size * sqrt(0.5) * cos(a + PGT_PI / 4.0 + c * PGT_PI / 2.0);
                 if (corner / size > r.depth) r.depth = corner / size;
             }
@@ -571,7 +578,7 @@ static void test_spinning_box_meets_a_thin_wall(void **state)
             for (o = 0; o < sizeof spins / sizeof spins[0]; ++o) {
                 int k;
                 for (k = 0; k < 5; ++k) {
-                    spin_throw r = throw_spinning_box(PG_EFFECTS_ALL, sizes[s], speed, spins[o], -5.0 - 0.137 * k);
+                    spin_throw r = throw_spinning_body(SPIN_SQUARE, PG_EFFECTS_ALL, sizes[s], speed, spins[o], -5.0 - 0.137 * k);
                     ++throws;
                     through += r.through;
                     paused += r.paused;
@@ -583,7 +590,7 @@ static void test_spinning_box_meets_a_thin_wall(void **state)
                                     r.paused ? ", paused" : "", r.depth, bound);
                         ok = 0;
                     }
-                    if (k == 0) control_through += throw_spinning_box(PG_EFFECTS_ALL & ~PG_EFFECT_CONTINUOUS, sizes[s], speed, spins[o], -5.0).through;
+                    if (k == 0) control_through += throw_spinning_body(SPIN_SQUARE, PG_EFFECTS_ALL & ~PG_EFFECT_CONTINUOUS, sizes[s], speed, spins[o], -5.0).through;
                 }
             }
         }
@@ -594,6 +601,48 @@ static void test_spinning_box_meets_a_thin_wall(void **state)
     if (control_through == 0) {
         print_error("control: without CONTINUOUS no box passed the wall: the setup cannot show tunnelling\n");
         ok = 0;
+    }
+    if (!ok) fail();
+}
+
+/* The same throws with planks (6:1 boxes), capsules (radius an eighth of the length) and
+ * triangles of 0.3, 0.6 and 1 m (1260 throws): none may pass the wall or pause. Before
+ * session 8, 99 planks, 20 capsules and 12 triangles of these passed. Sweeping the shape
+ * and letting a touching core circle go on, as Box2D v3 does, still let 2 planks and 1
+ * triangle through (a thin body spinning into the wall: its contacts, made for its
+ * turning ends, did not push). Holding the core by putting the body back at its start
+ * pose paused 8 planks for good in a wider sweep of 2625 throws; holding it at the
+ * surface while it slides and turns on (continuous.c) passes them all. */
+static void test_spinning_shapes_meet_a_thin_wall(void **state)
+{
+    static const int kinds[] = {SPIN_PLANK, SPIN_CAPSULE, SPIN_TRIANGLE};
+    static const char *const names[] = {"plank", "capsule", "triangle"};
+    static const double sizes[] = {0.3, 0.6, 1.0}, spins[] = {160.0, 200.0, 240.0, 280.0};
+    int ok = 1;
+    size_t q, s, o;
+    (void)state;
+    for (q = 0; q < sizeof kinds / sizeof kinds[0]; ++q) {
+        int through = 0, paused = 0, throws = 0;
+        for (s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
+            double speed;
+            for (speed = 10.0; speed <= 100.0; speed += 15.0) {
+                for (o = 0; o < sizeof spins / sizeof spins[0]; ++o) {
+                    int k;
+                    for (k = 0; k < 5; ++k) {
+                        spin_throw r = throw_spinning_body(kinds[q], PG_EFFECTS_ALL, sizes[s], speed, spins[o], -5.0 - 0.137 * k);
+                        ++throws;
+                        through += r.through;
+                        paused += r.paused;
+                        if (r.through || r.paused) {
+                            print_error("%s %.2f m at %.0f m/s spinning %.0f rad/s from x = %.3f: %s%s\n", names[q], sizes[s], speed,
+                                        spins[o], -5.0 - 0.137 * k, r.through ? "passed the wall" : "stayed", r.paused ? ", paused" : "");
+                            ok = 0;
+                        }
+                    }
+                }
+            }
+        }
+        print_message("spinning %ss against a 0.1 m wall: %d of %d passed, %d paused\n", names[q], through, throws, paused);
     }
     if (!ok) fail();
 }
@@ -1630,6 +1679,7 @@ int main(void)
         cmocka_unit_test(test_bullet_angled_static_wall),
         cmocka_unit_test(test_bullet_angled_dynamic_plank),
         cmocka_unit_test(test_spinning_box_meets_a_thin_wall),
+        cmocka_unit_test(test_spinning_shapes_meet_a_thin_wall),
         cmocka_unit_test(test_head_on_boxes),
         cmocka_unit_test(test_deep_overlap_separates),
         cmocka_unit_test(test_bounce_energy_never_grows),
