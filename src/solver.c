@@ -169,17 +169,19 @@ static size_t constraints_offset(uint32_t max_bodies)
     return (sizeof(solver_body) * ((size_t)max_bodies + 1u) + 7u) & ~(size_t)7u;
 }
 
-/* Byte offset of the sweeps of fast-turning bodies (continuous.c): after the constraints
- * and the list of active bodies, rounded up to 8 (a sweep holds an int64). */
-static size_t sweeps_offset(const pg_world_def *def)
+/* Bytes of the constraint area. The sweeps of fast-turning bodies (continuous.c) and
+ * their index by body reuse it once the impulses are stored: the write-back that fills
+ * them still reads the list of active bodies after it, never the constraints. It is
+ * rounded up to 8, so the list after it stays aligned as the constraints are. */
+static size_t constraint_area_bytes(const pg_world_def *def)
 {
-    return (constraints_offset(def->max_bodies) + sizeof(constraint) * def->max_contacts + sizeof(uint32_t) * def->max_bodies + 7u) &
-           ~(size_t)7u;
+    size_t cons = sizeof(constraint) * def->max_contacts, sweeps = (sizeof(pg_sweep) + sizeof(uint32_t)) * def->max_bodies;
+    return ((cons > sweeps ? cons : sweeps) + 7u) & ~(size_t)7u;
 }
 
 size_t pg__solver_scratch_bytes(const pg_world_def *def)
 {
-    return sweeps_offset(def) + (sizeof(pg_sweep) + sizeof(uint32_t)) * def->max_bodies + 64u;
+    return constraints_offset(def->max_bodies) + constraint_area_bytes(def) + sizeof(uint32_t) * def->max_bodies + 64u;
 }
 
 /* Box2D v3's b2MakeSoft in fixed point: omega = 2 pi hz, a1 = 2 zeta + h omega,
@@ -991,8 +993,8 @@ void pg__solve(pg_world *w)
     solver_body *bodies = (solver_body *)(void *)scratch;
     uint32_t dummy = w->def.max_bodies; /* the static side of a contact */
     constraint *cons = (constraint *)(void *)(scratch + constraints_offset(w->def.max_bodies));
-    uint32_t *active = (uint32_t *)(void *)((unsigned char *)cons + sizeof(constraint) * w->def.max_contacts);
-    pg_sweep *sweeps = (pg_sweep *)(void *)(scratch + sweeps_offset(&w->def));
+    uint32_t *active = (uint32_t *)(void *)((unsigned char *)cons + constraint_area_bytes(&w->def));
+    pg_sweep *sweeps = (pg_sweep *)(void *)cons; /* after the solve (constraint_area_bytes) */
     uint32_t n_active = 0, n_cons = 0, n_fast = 0, i, sub;
     int sweeping;
     step_context ctx;
@@ -1139,4 +1141,3 @@ void pg__solve(pg_world *w)
     }
     if (n_fast > 0) pg__sweep_fast_turns(w, sweeps, n_fast, (uint32_t *)(void *)(sweeps + w->def.max_bodies));
 }
-
