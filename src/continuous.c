@@ -54,8 +54,9 @@
  * to within 2.21 LSB (collide.c). At most PG__TOI_ITERATIONS advances; a pair still
  * closing after that stops where it got to (early, never late).
  *
- * Everything is integer and a pure function of the state: pairs in broadphase order, the
- * earliest fraction per body (a minimum, so order does not matter), bodies in index order.
+ * Everything is integer and a pure function of the state: pairs in broadphase order (a
+ * held core changes the path that the body's later pairs see), the earliest fraction per
+ * body (a minimum), bodies in index order.
  */
 #include "wide.h"
 #include "world_internal.h"
