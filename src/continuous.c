@@ -126,6 +126,14 @@ void pg__body_set_turn_extents(pg_world *w, uint32_t body)
     b->inner_extent = (pg_fix)inner;
 }
 
+/* The turn a body at angular velocity w makes in one step, Q16.16 rad rounded up, or -1
+ * beyond PG__MAX_TURN (such a body is not swept). */
+static int64_t turn_at_rate(pg_fix w, uint32_t step_hz)
+{
+    int64_t turn = (abs64(w) + (int64_t)step_hz - 1) / (int64_t)step_hz;
+    return turn > (PG__MAX_TURN * PG__TWO_PI_Q16_UP >> 32) ? -1 : turn;
+}
+
 /* Whether body b, turning by turn_rad (Q16.16 rad, >= 0) in a step, is fast-turning:
  * some shape's farthest point moves more than half the body's smallest extent. */
 static int turns_fast(const pg_body *b, int64_t turn_rad)
@@ -140,8 +148,8 @@ int64_t pg__turn_box_radius(const pg_world *w, const pg_body *b, const pg_shape 
     int64_t turn_rad;
     if (b->type != PG_BODY_DYNAMIC || b->w == 0 || b->turn_reach == 0 || (b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return -1;
     if ((w->def.effects & (PG_EFFECT_CONTINUOUS | PG_EFFECT_ROTATION)) != (PG_EFFECT_CONTINUOUS | PG_EFFECT_ROTATION)) return -1;
-    turn_rad = (abs64(b->w) + (int64_t)w->def.step_hz - 1) / (int64_t)w->def.step_hz;
-    if (turn_rad > (PG__MAX_TURN * PG__TWO_PI_Q16_UP >> 32) || !turns_fast(b, turn_rad)) return -1;
+    turn_rad = turn_at_rate(b->w, w->def.step_hz);
+    if (turn_rad < 0 || !turns_fast(b, turn_rad)) return -1;
     return shape_reach(s, b->local_center) + s->local.radius;
 }
 
@@ -182,6 +190,10 @@ static int64_t distance(const pg_geom *g, const pg_geom *target, int64_t window,
 
 enum { TOI_NONE, TOI_HIT, TOI_TOUCHING, TOI_HOLD };
 
+/* How far dc (a path, Q16.16 m per step, or a velocity) goes along n towards the target:
+ * |dc| < 2^32.5 and |n| = 2^30, so the dot product fits (Cauchy-Schwarz). */
+static int64_t approach(int64_t dcx, int64_t dcy, pg_dir n) { return pg__round_shift64(dcx * n.x + dcy * n.y, 30); }
+
 /* Conservative advancement of `local` (body frame) along s against the static target;
  * reach is the shape's turn reach. On a hit *t is the fraction.
  * A shape that does not turn with its body (reach 0: the core circle at the centre of
@@ -208,7 +220,7 @@ static int time_of_impact(const pg_sweep *s, const pg_body *b, const pg_geom *lo
      * pause (see the header) */
     if (reach == 0 && d - PG__TOI_TARGET <= PG__TOI_TOLERANCE) {
         /* the core circle touches already: it may leave, or slide along, but not go in */
-        if (pg__round_shift64(dcx * n.x + dcy * n.y, 30) <= 0) return TOI_NONE;
+        if (approach(dcx, dcy, n) <= 0) return TOI_NONE;
         *hold = n;
         return TOI_HOLD;
     }
@@ -217,7 +229,7 @@ static int time_of_impact(const pg_sweep *s, const pg_body *b, const pg_geom *lo
         /* d - target < 2^32 here (within the window), times 2^16 */
         int64_t speed = bound, dt;
         if (reach == 0) {
-            speed = pg__round_shift64(dcx * n.x + dcy * n.y, 30); /* along the normal, Q16.16 m per step */
+            speed = approach(dcx, dcy, n); /* along the normal */
             if (speed <= 0) return TOI_NONE;
         }
         dt = ((d - PG__TOI_TARGET) * 65536) / speed;
@@ -265,7 +277,7 @@ static int64_t shape_against_static(const pg_world *w, const pg_sweep *s, uint32
 /* Take from v its part along n when that moves in: v - max(0, v.n) n. */
 static pg_vec2 without_approach(pg_vec2 v, pg_dir n)
 {
-    int64_t vn = pg__round_shift64((int64_t)v.x * n.x + (int64_t)v.y * n.y, 30);
+    int64_t vn = approach(v.x, v.y, n);
     if (vn <= 0) return v;
     return pg_v2(pg__sat64((int64_t)v.x - pg__round_shift64(vn * n.x, 30)), pg__sat64((int64_t)v.y - pg__round_shift64(vn * n.y, 30)));
 }
@@ -273,8 +285,8 @@ static pg_vec2 without_approach(pg_vec2 v, pg_dir n)
 int pg__sweep_is_fast(const pg_world *w, const pg_sweep *s, pg_fix w0)
 {
     const pg_body *b = &w->bodies[s->body];
-    int64_t turn, start = (abs64(w0) + (int64_t)w->def.step_hz - 1) / (int64_t)w->def.step_hz;
-    if (s->turn > PG__MAX_TURN || s->turn < -PG__MAX_TURN || start > (PG__MAX_TURN * PG__TWO_PI_Q16_UP >> 32)) return 0;
+    int64_t turn, start = turn_at_rate(w0, w->def.step_hz);
+    if (s->turn > PG__MAX_TURN || s->turn < -PG__MAX_TURN || start < 0) return 0;
     turn = turn_radians(s->turn);
     return turns_fast(b, turn > start ? turn : start);
 }
