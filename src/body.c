@@ -295,6 +295,7 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
 {
     pg_body *b = &world->bodies[body_index];
     uint32_t s;
+    int turning;
     pg_fix margin = PG_SPECULATIVE_DISTANCE;
     pg_fix sweep_x = 0, sweep_y = 0;
     if (b->type != PG_BODY_STATIC && (world->def.effects & PG_EFFECT_CONTINUOUS) != 0) {
@@ -305,15 +306,15 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
         sweep_x = dx;
         sweep_y = dy;
     }
+    /* fast-turning (continuous.c): each shape may face any way during the step, and its
+     * time of impact is looked for only against the pairs found here */
+    turning = b->w != 0 && b->turn_reach != 0 && pg__turns_fast_now(world, b);
     for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
         pg_aabb box;
-        int64_t turn_radius;
         pg__geom_place_slot(&world->shapes[s].local, b->origin, b->rot, &world->world_geoms[s]);
         box = pg_geom_aabb(&world->world_geoms[s]);
-        turn_radius = b->w != 0 && b->turn_reach != 0 ? pg__turn_box_radius(world, b, &world->shapes[s]) : -1;
-        if (turn_radius >= 0) {
-            /* fast-turning (continuous.c): the shape may face any way during the step, and
-             * its time of impact is looked for only against the pairs found here */
+        if (turning) {
+            int64_t turn_radius = pg__shape_turn_radius(b, &world->shapes[s]);
             pg_fix lx = pg__sat64((int64_t)b->center.x - turn_radius), hx = pg__sat64((int64_t)b->center.x + turn_radius);
             pg_fix ly = pg__sat64((int64_t)b->center.y - turn_radius), hy = pg__sat64((int64_t)b->center.y + turn_radius);
             if (lx < box.lo.x) box.lo.x = lx;

@@ -15,7 +15,7 @@
  * inner / 2, the extents below) is "fast-turning". (The start's rate counts too: a
  * contact made for the wrong features can stop the spin in the first substep and let the
  * body go on into the wall.) For each static shape its broadphase box overlaps (the box
- * of a body turning that fast covers every orientation, pg__turn_box_radius; the pair
+ * of a body turning that fast covers every orientation, pg__shape_turn_radius; the pair
  * need not have a contact), the earliest fraction of the step at which the shape, moved
  * along the step's path, comes within PG_LINEAR_SLOP of the static shape is found by
  * conservative advancement. The body is put back at the earliest fraction over its pairs
@@ -143,15 +143,16 @@ static int turns_fast(const pg_body *b, int64_t turn_rad)
     return b->turn_reach > 0 && turn_rad * b->turn_reach > (int64_t)b->inner_extent * 32768;
 }
 
-int64_t pg__turn_box_radius(const pg_world *w, const pg_body *b, const pg_shape *s)
+int pg__turns_fast_now(const pg_world *w, const pg_body *b)
 {
     int64_t turn_rad;
-    if (b->type != PG_BODY_DYNAMIC || b->w == 0 || b->turn_reach == 0 || (b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return -1;
-    if ((w->def.effects & (PG_EFFECT_CONTINUOUS | PG_EFFECT_ROTATION)) != (PG_EFFECT_CONTINUOUS | PG_EFFECT_ROTATION)) return -1;
+    if (b->type != PG_BODY_DYNAMIC || b->w == 0 || b->turn_reach == 0 || (b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return 0;
+    if ((w->def.effects & (PG_EFFECT_CONTINUOUS | PG_EFFECT_ROTATION)) != (PG_EFFECT_CONTINUOUS | PG_EFFECT_ROTATION)) return 0;
     turn_rad = turn_at_rate(b->w, w->def.step_hz);
-    if (turn_rad < 0 || !turns_fast(b, turn_rad)) return -1;
-    return shape_reach(s, b->local_center) + s->local.radius;
+    return turn_rad >= 0 && turns_fast(b, turn_rad);
 }
+
+int64_t pg__shape_turn_radius(const pg_body *b, const pg_shape *s) { return shape_reach(s, b->local_center) + s->local.radius; }
 
 int64_t pg__turn_of_step(pg_angle a0, pg_angle a1, int64_t radians)
 {

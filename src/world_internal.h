@@ -216,10 +216,11 @@ typedef struct pg_sweep {
 } pg_sweep;
 void pg__shape_set_extents(pg_shape *s); /* whenever s->local is built */
 void pg__body_set_turn_extents(pg_world *w, uint32_t body); /* whenever its shapes or local_center change */
-/* The radius about the centre of mass that shape s of body b sweeps while it turns in the
- * coming step, when b is fast-turning at its angular velocity; -1 when it is not (then
- * its broadphase box needs no more than its pose). */
-int64_t pg__turn_box_radius(const pg_world *w, const pg_body *b, const pg_shape *s);
+/* Whether body b is fast-turning at its angular velocity now (for its broadphase boxes at
+ * the step's start), and then the radius about its centre of mass that shape s sweeps
+ * while it turns: the box covers that disc (otherwise the pose's box is enough). */
+int pg__turns_fast_now(const pg_world *w, const pg_body *b);
+int64_t pg__shape_turn_radius(const pg_body *b, const pg_shape *s);
 /* The turn from a0 to a1 in binary-angle units, unwrapped: the whole turns are taken from
  * `radians` (Q32), the solver's sum of w h over the substeps. Beyond 8 turns either way,
  * a value past PG__MAX_TURN: such a body is not swept. */
