@@ -66,11 +66,13 @@ static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact
         p->normal_impulse = 0;
         p->tangent_impulse = 0;
         p->max_normal_impulse = 0;
+        p->push_impulse = 0;
         if (old == NULL || i >= m.count) continue;
         for (j = 0; j < old->point_count; ++j) {
             if (old->points[j].id == p->id) {
                 p->normal_impulse = old->points[j].normal_impulse;
                 p->tangent_impulse = old->points[j].tangent_impulse;
+                p->push_impulse = old->points[j].push_impulse;
                 break;
             }
         }

@@ -107,6 +107,17 @@ void pg__update_sleep(pg_world *w)
         r = find_root(parent, i);
         if (b->sleep_time < min_time[r]) min_time[r] = b->sleep_time;
     }
+    /* An island still pushing out a deep overlap does not sleep: that push moves positions
+     * only (solver.c, DEEP PUSH), so its bodies look at rest while they are not. */
+    for (i = 0; i < w->contact_count; ++i) {
+        const pg_contact *c = &w->contacts[i];
+        int32_t k;
+        for (k = 0; k < c->point_count; ++k) {
+            if (c->points[k].push_impulse == 0) continue;
+            if (pg__body_is_active(&w->bodies[c->body_a])) min_time[find_root(parent, c->body_a)] = 0;
+            if (pg__body_is_active(&w->bodies[c->body_b])) min_time[find_root(parent, c->body_b)] = 0;
+        }
+    }
     for (i = 0; i < w->body_high; ++i) {
         pg_body *b = &w->bodies[i];
         uint32_t r;

@@ -19,7 +19,8 @@
 #include "world_internal.h"
 
 #define SNAPSHOT_MAGIC 0x4E534750u /* "PGSN" */
-#define SNAPSHOT_VERSION 2u /* 2: inverse mass and inertia are derived, not stored */
+#define SNAPSHOT_VERSION 3u /* 2: inverse mass and inertia are derived, not stored; 3: a
+                              contact point's push_impulse */
 
 /* What a world can hold, from the code that writes each value. Restoring refuses a
  * value beyond these: only corruption makes one, and the step's arithmetic relies on
@@ -199,6 +200,7 @@ static void encode_contact(const pg_contact *c, sink *s)
         emit_i32(s, p->normal_impulse);
         emit_i32(s, p->tangent_impulse);
         emit_i32(s, p->max_normal_impulse);
+        emit_i32(s, p->push_impulse);
     }
 }
 
@@ -722,6 +724,9 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                     cp->max_normal_impulse = take_i32(r, "contact.max_normal_impulse");
                     if (cp->max_normal_impulse < 0 || cp->max_normal_impulse > LIMIT_LAMBDA)
                         invalid(r, at, "contact.max_normal_impulse (outside 0..2^29)");
+                    at = r->pos;
+                    cp->push_impulse = take_i32(r, "contact.push_impulse");
+                    if (cp->push_impulse < 0 || cp->push_impulse > LIMIT_LAMBDA) invalid(r, at, "contact.push_impulse (outside 0..2^29)");
                 }
                 if (w != NULL) w->contacts[i] = c;
             }
@@ -834,7 +839,7 @@ static size_t record_length(pg_section section, const uint8_t *p, size_t avail)
         n = 5 + 8 + 2 + (size_t)p[14] * 8u + 4 + 12 + 8;
     } else if (section == PG_SECTION_CONTACTS) {
         if (avail < 33) return 0;
-        n = 33 + (size_t)p[32] * 28u;
+        n = 33 + (size_t)p[32] * 32u; /* a point: point, separation, id, four impulses */
     }
     return n <= avail ? n : 0;
 }

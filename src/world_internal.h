@@ -95,6 +95,8 @@ typedef struct pg_contact_point {
     pg_fix normal_impulse;   /* accumulated, velocity-space (see solver.c) */
     pg_fix tangent_impulse;
     pg_fix max_normal_impulse;
+    pg_fix push_impulse;     /* accumulated, pseudo-velocity space: the push-out that moves
+                                positions only (solver.c, DEEP PUSH) */
 } pg_contact_point;
 
 typedef struct pg_contact {

@@ -117,7 +117,9 @@ typedef struct pg_world_def {
     uint32_t effects;           /* PG_EFFECT_* bits, default PG_EFFECTS_ALL */
     pg_fix contact_hertz;       /* contact stiffness, default 30 Hz (capped at a quarter of the substep rate) */
     pg_fix contact_damping_ratio; /* default 10 */
-    pg_fix contact_push_max;    /* fastest push-out of overlap, default 3 m/s */
+    pg_fix contact_push_max;    /* fastest push-out of overlap, default 3 m/s; of it, only
+                                   what holds a contact's load (plus 1/32 of this) becomes
+                                   velocity, the rest moves bodies apart without momentum */
     pg_fix restitution_threshold; /* approach speeds below this do not bounce, default 1 m/s */
     pg_fix max_linear_speed;    /* cap, default 400 m/s, counted in stats.speed_clamps */
     pg_fix sleep_linear_tolerance;  /* default 0.05 m/s */

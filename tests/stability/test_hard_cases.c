@@ -719,7 +719,12 @@ static void test_head_on_boxes(void **state)
  *     overlap is left (at most OVERLAP_TOL at the stiffer bias rate: 0.1 m/s);
  *   - after 3 s they rest (|v| < 0.05 m/s, |w| < 2 deg/s: the sleep tolerances) and no
  *     two overlap by more than OVERLAP_TOL (a box shrunk by that much on every side,
- *     placed where the box is, touches nothing: pg_world_query_geometry).
+ *     placed where the box is, touches nothing: pg_world_query_geometry);
+ *   - and they rest side by side: every two neighbours' centres 1 m apart to within
+ *     OVERLAP_TOL. Push-out beyond what holds a contact's load moves positions without
+ *     becoming momentum (src/solver.c, DEEP PUSH), so a box stops where its overlaps
+ *     open; until session 9 the push-out was all velocity, the boxes slid on and ended
+ *     spread over 13 m, neighbours up to 1.99 m apart.
  * (Before session 5 the second point asserted every speed after the separation below
  * 3.5 m/s, the per-contact cap applied to one box's speed: it held while the boxes took
  * 66 steps to separate, time enough for friction to slow the outer ones; solved
@@ -757,7 +762,7 @@ static void test_deep_overlap_separates(void **state)
         pg_shape_def sd = pg_default_shape_def();
         pg_body_id box[10];
         double max_speed = 0.0, max_speed_after_sep = 0.0, speed_at_sep = 0.0, max_apart = 0.0, worst_rest_v = 0.0, worst_rest_w = 0.0,
-               worst_depth = -1.0;
+               worst_depth = -1.0, worst_spacing = 0.0;
         int i, step, max_step = 0, separated_at = -1;
         make_ground(t.w);
         for (i = 0; i < 10; ++i) {
@@ -792,6 +797,10 @@ static void test_deep_overlap_separates(void **state)
             if (d > worst_depth) worst_depth = d;
             if (v > worst_rest_v) worst_rest_v = v;
             if (wv > worst_rest_w) worst_rest_w = wv;
+            if (i > 0) {
+                double spacing = fabs(fd(pg_body_position(t.w, box[i]).x) - fd(pg_body_position(t.w, box[i - 1]).x) - 1.0);
+                if (spacing > worst_spacing) worst_spacing = spacing;
+            }
         }
         print_message("deep overlap (effects 0x%02x): max speed %.4f m/s (step %d), neighbours apart at up to %.4f m/s; separated "
                       "(overlap <= %.3f m) at step %d at up to %.4f m/s, max speed after that %.4f m/s; at 3 s: deepest overlap "
@@ -806,12 +815,131 @@ static void test_deep_overlap_separates(void **state)
         ok &= within(worst_depth, OVERLAP_TOL, "deep overlap: overlap of two bodies after 3 s (m)");
         ok &= within(worst_rest_v, 0.05, "deep overlap: speed after 3 s (m/s)");
         ok &= within(worst_rest_w, 2.0, "deep overlap: angular speed after 3 s (deg/s)");
+        ok &= within(worst_spacing, OVERLAP_TOL, "deep overlap: |neighbours' centre distance - 1 m| after 3 s (m)");
         if (separated_at < 0) {
             print_error("deep overlap: the boxes never separated to within %.3f m\n", OVERLAP_TOL);
             ok = 0;
         }
         free_world(&t);
     }
+    if (!ok) fail();
+}
+
+/* =====================================================================================
+ * Overlapping column: 10 boxes of 1 m created on the ground in a column with centres
+ * `gap` m apart (each overlaps the next by 1 - gap), sleeping off, 5 s. A contact pushes
+ * its pair apart at up to contact_push_max (3 m/s), and until session 9 all of that was
+ * velocity: box k rose at up to k times the cap while the overlaps opened, and nothing
+ * took the momentum back (centres 0.5 m apart: 15.3 m/s, the top 8.4 m above where it
+ * rests). Now only push_max / 32 of a contact's push-out beyond what holds its load
+ * becomes velocity, the rest moves positions only (src/solver.c, DEEP PUSH). Asserted,
+ * for centres 0.2, 0.5 and 0.8 m apart:
+ *   - no box is faster than what the velocity parts of the push-outs add up to along the
+ *     column, 10 (push_max / 32) = 0.94 m/s;
+ *   - no box rises above where it ends by more than a box at that speed would coast up,
+ *     0.94^2 / (2 g) = 0.044 m: the column is not thrown;
+ *   - after 5 s it stands (every centre within 1 cm of x = 0, every box within 0.5 deg of
+ *     upright) and its top is within 1 mm of where the top of the same column created
+ *     touching rests: the overlaps have gone, to the soft contacts' own.
+ * ===================================================================================== */
+static double overlapping_column_top(double gap, double *max_speed, double *max_rise, double *max_x, double *max_tilt)
+{
+    test_world t = make_world(PG_EFFECTS_ALL & ~PG_EFFECT_SLEEPING);
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id box[10];
+    double highest[10], top;
+    int i, step;
+    make_ground(t.w);
+    for (i = 0; i < 10; ++i) {
+        pg_body_def bd = dynamic_at(0.0, 0.5 + gap * i);
+        assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &box[i]), PG_OK);
+        highest[i] = -1e9;
+    }
+    *max_speed = *max_rise = *max_x = *max_tilt = 0.0;
+    for (step = 1; step <= 300; ++step) {
+        step_once(t.w);
+        for (i = 0; i < 10; ++i) {
+            double v = speed(t.w, box[i]), y = fd(pg_body_position(t.w, box[i]).y);
+            if (v > *max_speed) *max_speed = v;
+            if (y > highest[i]) highest[i] = y;
+        }
+    }
+    for (i = 0; i < 10; ++i) {
+        double rise = highest[i] - fd(pg_body_position(t.w, box[i]).y), x = fabs(fd(pg_body_position(t.w, box[i]).x));
+        double tilt = fabs(angle_deg(pg_body_angle(t.w, box[i])));
+        if (rise > *max_rise) *max_rise = rise;
+        if (x > *max_x) *max_x = x;
+        if (tilt > *max_tilt) *max_tilt = tilt;
+    }
+    top = fd(pg_body_position(t.w, box[9]).y);
+    free_world(&t);
+    return top;
+}
+
+static void test_overlapping_column_is_not_thrown(void **state)
+{
+    static const double gaps[] = {0.2, 0.5, 0.8};
+    const double speed_bound = 10.0 * 3.0 / 32.0, rise_bound = speed_bound * speed_bound / (2.0 * 10.0);
+    double v, rise, x, tilt, resting_top = overlapping_column_top(1.0, &v, &rise, &x, &tilt);
+    int k, ok = 1;
+    (void)state;
+    print_message("overlapping column: the column created touching rests with its top at y = %.5f m\n", resting_top);
+    for (k = 0; k < 3; ++k) {
+        double top = overlapping_column_top(gaps[k], &v, &rise, &x, &tilt);
+        char what[128];
+        print_message("overlapping column, centres %.1f m apart: max speed %.4f m/s, highest rise above the end %.4f m, at 5 s max |x| "
+                      "%.4f m, max tilt %.3f deg, top y %.5f m\n", gaps[k], v, rise, x, tilt, top);
+        snprintf(what, sizeof what, "overlapping column %.1f m apart: largest speed (m/s)", gaps[k]);
+        ok &= within(v, speed_bound, what);
+        snprintf(what, sizeof what, "overlapping column %.1f m apart: rise above where a box ends (m)", gaps[k]);
+        ok &= within(rise, rise_bound, what);
+        snprintf(what, sizeof what, "overlapping column %.1f m apart: sideways offset at 5 s (m)", gaps[k]);
+        ok &= within(x, 0.01, what);
+        snprintf(what, sizeof what, "overlapping column %.1f m apart: tilt at 5 s (degrees)", gaps[k]);
+        ok &= within(tilt, 0.5, what);
+        snprintf(what, sizeof what, "overlapping column %.1f m apart: |top - the touching column's top| at 5 s (m)", gaps[k]);
+        ok &= within(fabs(top - resting_top), 0.001, what);
+    }
+    if (!ok) fail();
+}
+
+/* =====================================================================================
+ * Slow push-out: two 1 m boxes created side by side on the ground overlapping by half,
+ * contact_push_max 0.2 m/s, sleeping on. The push-out beyond a contact's hold moves
+ * positions only (DEEP PUSH), so the boxes look at rest to the sleep test (their speeds
+ * stay below 0.05 m/s) while the push still separates them; an island whose contacts hold
+ * a push impulse must stay awake (src/island.c). Asserted: after 5 s the centres are 1 m
+ * apart to within OVERLAP_TOL (separated, not asleep half way: without that rule they
+ * fall asleep at 1 s, 0.599 m apart), and both boxes are asleep by 10 s.
+ * ===================================================================================== */
+static void test_slow_push_out_is_not_put_to_sleep(void **state)
+{
+    pg_world_def d = pg_default_world_def();
+    test_world t;
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id a, b;
+    pg_body_def bd;
+    double apart_5s;
+    int ok = 1;
+    (void)state;
+    d.contact_push_max = fx(0.2);
+    t = make_world_def(&d);
+    make_ground(t.w);
+    bd = dynamic_at(-0.25, 0.5);
+    assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &a), PG_OK);
+    bd = dynamic_at(0.25, 0.5);
+    assert_int_equal(pg_make_box(t.w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &b), PG_OK);
+    step_n(t.w, 300);
+    apart_5s = fd(pg_body_position(t.w, b).x) - fd(pg_body_position(t.w, a).x);
+    step_n(t.w, 300);
+    print_message("slow push-out: centres %.4f m apart after 5 s; asleep after 10 s: %d %d\n", apart_5s, !pg_body_is_awake(t.w, a),
+                  !pg_body_is_awake(t.w, b));
+    ok &= within(fabs(apart_5s - 1.0), OVERLAP_TOL, "slow push-out: |centre distance - 1 m| after 5 s (m)");
+    if (pg_body_is_awake(t.w, a) || pg_body_is_awake(t.w, b)) {
+        print_error("slow push-out: the boxes are still awake after 10 s\n");
+        ok = 0;
+    }
+    free_world(&t);
     if (!ok) fail();
 }
 
@@ -1685,6 +1813,8 @@ int main(void)
         cmocka_unit_test(test_spinning_shapes_meet_a_thin_wall),
         cmocka_unit_test(test_head_on_boxes),
         cmocka_unit_test(test_deep_overlap_separates),
+        cmocka_unit_test(test_overlapping_column_is_not_thrown),
+        cmocka_unit_test(test_slow_push_out_is_not_put_to_sleep),
         cmocka_unit_test(test_bounce_energy_never_grows),
         cmocka_unit_test(test_bounce_restitution_zero_rests_within_2s),
         cmocka_unit_test(test_bounce_flat_box_does_not_turn),

@@ -14,6 +14,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "pogon/pogon.h"
 #include "pogon/replay.h"
@@ -590,7 +591,7 @@ static layout find_layout(const snapshot *s)
     pos += 4;
     for (i = 0; i < l.contacts; ++i) {
         l.contact[i] = pos;
-        pos += 33 + 28u * s->bytes[pos + 32];
+        pos += 33 + 32u * s->bytes[pos + 32];
     }
     PG_EXPECT_EQ(pos, start[PG_SECTION_CONTACTS] + length[PG_SECTION_CONTACTS], "%s", "contact records fill their section");
     return l;
@@ -905,7 +906,7 @@ static void test_inconsistent_snapshots_refused(void **state)
         expect_bytes_accepted(&r, r.copy, s.size, "a body at the edge of Q16.16");
         /* contact 0: normal +16, friction +24, restitution +28, point count +32, then its
          * first point: separation +41, normal impulse +49, tangent impulse +53, max normal
-         * impulse +57. Two shapes overlap by 400 m at most; a speculative gap has no limit
+         * impulse +57, push impulse +61. Two shapes overlap by 400 m at most; a speculative gap has no limit
          * (continuous collision widens the window with the speeds). */
         assert_true(s.bytes[c0 + 32] >= 1);
         put32(fresh_copy(&r) + c0 + 41, 0x80000000u);
@@ -944,9 +945,14 @@ static void test_inconsistent_snapshots_refused(void **state)
         expect_corruption_refused(&r, "contact.tangent_impulse INT32_MIN");
         put32(fresh_copy(&r) + c0 + 57, 0x7FFFFFFFu);
         expect_corruption_refused(&r, "contact.max_normal_impulse INT32_MAX");
+        put32(fresh_copy(&r) + c0 + 61, (uint32_t)-1);
+        expect_corruption_refused(&r, "contact.push_impulse negative");
+        put32(fresh_copy(&r) + c0 + 61, (1u << 29) + 1u);
+        expect_corruption_refused(&r, "contact.push_impulse 2^29 + 1");
         put32(fresh_copy(&r) + c0 + 49, 1u << 29);
         put32(r.copy + c0 + 53, (uint32_t)-(INT32_C(1) << 29));
         put32(r.copy + c0 + 57, 1u << 29);
+        put32(r.copy + c0 + 61, 1u << 29);
         expect_bytes_accepted(&r, r.copy, s.size, "contact impulses at the solver's bound 2^29");
         t_free(big);
     }
@@ -1136,6 +1142,67 @@ static void test_diff_names_contact(void **state)
     free_world(&b.t);
 }
 
+/* DEEP PUSH's pseudo impulse (a contact point's push_impulse) is state: the next step
+ * warm starts from it. Six 1 m boxes created on the ground overlapping 0.6 m each, saved
+ * mid push-out: restoring and stepping reproduces every frame bit for bit, and the same
+ * snapshot with every push_impulse cleared (still a valid snapshot) steps elsewhere. */
+static void test_push_impulse_is_state(void **state)
+{
+    enum { SAVED = 3, FRAMES = 40 };
+    test_world t;
+    pg_world_def d = pg_default_world_def();
+    pg_body_def bd = pg_default_body_def();
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id id;
+    uint64_t hashes[FRAMES + 1];
+    snapshot saved, cleared;
+    layout l;
+    uint32_t f, i, pushing = 0;
+    (void)state;
+    d.effects &= ~PG_EFFECT_SLEEPING;
+    t = world_from_def(&d);
+    bd.position = pg_v2(0, fx(-0.5));
+    assert_int_equal(pg_make_wall(t.w, &bd, &sd, fx(40), fx(1), &id), PG_OK);
+    bd.type = PG_BODY_DYNAMIC;
+    for (i = 0; i < 6; ++i) {
+        bd.position = pg_v2(fx(-1.0 + 0.4 * i), fx(0.5));
+        assert_int_equal(pg_make_box(t.w, &bd, &sd, fx(1), fx(1), &id), PG_OK);
+    }
+    for (f = 1; f <= FRAMES; ++f) {
+        assert_int_equal(pg_world_step(t.w), PG_OK);
+        hashes[f] = pg_world_hash(t.w);
+        if (f == SAVED) saved = save(t.w);
+    }
+    /* the saved frame holds pseudo impulses: contact point k's push_impulse is at
+     * record + 33 + 32 k + 28 (point, separation, id, three impulses before it) */
+    cleared = saved;
+    cleared.bytes = (uint8_t *)t_malloc(saved.size);
+    assert_non_null(cleared.bytes);
+    memcpy(cleared.bytes, saved.bytes, saved.size);
+    l = find_layout(&saved);
+    for (i = 0; i < l.contacts; ++i) {
+        uint32_t k, points = saved.bytes[l.contact[i] + 32];
+        for (k = 0; k < points; ++k) {
+            size_t at = l.contact[i] + 33 + 32u * k + 28u;
+            if (get32(saved.bytes + at) != 0) ++pushing;
+            put32(cleared.bytes + at, 0);
+        }
+    }
+    print_message("push impulse: %u points hold one at frame %d\n", pushing, SAVED);
+    assert_true(pushing > 0);
+    assert_int_equal(pg_world_snapshot_restore(t.w, saved.bytes, saved.size), PG_OK);
+    for (f = SAVED + 1; f <= FRAMES; ++f) {
+        assert_int_equal(pg_world_step(t.w), PG_OK);
+        if (pg_world_hash(t.w) != hashes[f]) fail_msg("frame %u differs after restoring frame %d", f, SAVED);
+    }
+    assert_int_equal(pg_world_snapshot_restore(t.w, cleared.bytes, cleared.size), PG_OK);
+    for (f = SAVED + 1; f <= FRAMES; ++f) assert_int_equal(pg_world_step(t.w), PG_OK);
+    if (pg_world_hash(t.w) == hashes[FRAMES]) fail_msg("%s", "restored without its push impulses, the run still ends on the same hash");
+    free_snapshot(&saved);
+    free_snapshot(&cleared);
+    free_world(&t);
+}
+
 /* ---- (6) snapshot size per resting body and per contact (a figure for the docs) ----------------- */
 static void test_size_per_resting_body(void **state)
 {
@@ -1182,6 +1249,7 @@ int main(void)
         cmocka_unit_test_teardown(test_hashes_are_of_the_snapshot_encoding, free_leftovers),
         cmocka_unit_test_teardown(test_section_hashes_and_diff, free_leftovers),
         cmocka_unit_test_teardown(test_diff_names_contact, free_leftovers),
+        cmocka_unit_test_teardown(test_push_impulse_is_state, free_leftovers),
         cmocka_unit_test_teardown(test_size_per_resting_body, free_leftovers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

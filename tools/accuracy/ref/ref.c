@@ -55,6 +55,7 @@ typedef struct cpoint {
     double sep;
     unsigned id;
     double ln, lt;    /* stored lambdas (m/s) */
+    double pl;        /* stored pseudo lambda (pogon's DEEP PUSH) */
 } cpoint;
 
 typedef struct contact {
@@ -76,9 +77,11 @@ typedef struct spoint {
     double friction_ratio, relative_velocity;
     double approach_start, approach_accel; /* pogon's APPROACH: at the step's start, and gravity's part per second */
     double ln, lt, max_ln;
+    double s_soft, bias, deep_push, pl; /* DEEP PUSH: the soft pass's separation, its velocity
+                                           bias, the excess for the pseudo row, and its lambda */
 } spoint;
 
-typedef struct sbody { vec v; double w; vec c0, c; double a0, a; double dqc, dqs; int dynamic, turns_anchors; } sbody;
+typedef struct sbody { vec v; double w; vec c0, c; double a0, a; double dqc, dqs; int dynamic, turns_anchors; vec pv; int pushed; } sbody;
 
 typedef struct constraint {
     int a, b;         /* solver body index, or -1 for a static side */
@@ -89,6 +92,7 @@ typedef struct constraint {
     double restitution;
     int block;        /* the two normal rows solved together, as pogon does */
     double e01, e10;  /* what a unit of lambda on point 1 does to point 0's normal speed, and back */
+    int deep;         /* DEEP PUSH: a point has pushed past its velocity cap in this step */
     spoint p[2];
 } constraint;
 
@@ -106,6 +110,7 @@ struct ref_world {
     sbody *sbodies;
     sbody dummy;
     constraint *cons;
+    int *deep_list;   /* the constraints of a substep's pseudo pass (DEEP PUSH) */
 };
 
 ref_def ref_default_def(void)
@@ -138,7 +143,8 @@ ref_world *ref_create(const ref_def *def, int capacity)
     w->contacts = (contact *)calloc((size_t)w->contact_capacity, sizeof(contact));
     w->contacts_next = (contact *)calloc((size_t)w->contact_capacity, sizeof(contact));
     w->cons = (constraint *)calloc((size_t)w->contact_capacity, sizeof(constraint));
-    if (!w->bodies || !w->order || !w->sbodies || !w->pairs || !w->contacts || !w->contacts_next || !w->cons) {
+    w->deep_list = (int *)calloc((size_t)w->contact_capacity, sizeof(int));
+    if (!w->bodies || !w->order || !w->sbodies || !w->pairs || !w->contacts || !w->contacts_next || !w->cons || !w->deep_list) {
         ref_destroy(w);
         return NULL;
     }
@@ -154,6 +160,7 @@ void ref_destroy(ref_world *w)
     free(w->pairs);
     free(w->contacts);
     free(w->contacts_next);
+    free(w->deep_list);
     free(w->cons);
     free(w);
 }
@@ -567,12 +574,13 @@ static void update_contacts(ref_world *w)
         c->restitution = A->restitution > B->restitution ? A->restitution : B->restitution;
         for (k = 0; k < m.count; ++k) {
             c->p[k] = m.p[k];
-            c->p[k].ln = c->p[k].lt = 0;
+            c->p[k].ln = c->p[k].lt = c->p[k].pl = 0;
             if (prev == NULL) continue;
             for (q = 0; q < prev->count; ++q)
                 if (prev->p[q].id == c->p[k].id) {
                     c->p[k].ln = prev->p[q].ln;
                     c->p[k].lt = prev->p[q].lt;
+                    c->p[k].pl = prev->p[q].pl;
                     break;
                 }
         }
@@ -635,21 +643,44 @@ static vec anchor_now(const sbody *b, vec r, int round)
     return v2(b->c.x - b->c0.x + b->dqc * r.x - b->dqs * r.y, b->c.y - b->c0.y + b->dqs * r.x + b->dqc * r.y);
 }
 
-typedef struct step_ctx { double n; softness soft, soft_static; double push_max; int friction; double t_end; /* the current substep's end, s */ } step_ctx;
+typedef struct step_ctx {
+    double n;
+    softness soft, soft_static;
+    double push_max, push_floor; /* push_floor: push_max / 32 (DEEP PUSH) */
+    int friction;
+    double t_end; /* the current substep's end, s */
+} step_ctx;
 
 /* The normal row of point p at separation s: b = relative speed + bias (what the row
  * drives to 0) and whether it is soft. */
-static double normal_target(const step_ctx *ctx, const softness *soft, double s, double rel, int use_bias, int *is_soft)
+static double normal_target(const step_ctx *ctx, const spoint *p, double s, double rel, int use_bias, int *is_soft)
 {
     *is_soft = 0;
     if (s > 0) return rel + s * ctx->n;
     if (use_bias) {
-        double bias = soft->bias_rate * s;
-        if (bias < -ctx->push_max) bias = -ctx->push_max;
         *is_soft = 1;
-        return rel + bias;
+        return rel + p->bias;
     }
     return rel;
+}
+
+/* pogon's DEEP PUSH: of the bias (capped at push_max), velocity gets at most the floor
+ * plus what holds the impulse at rest (impulse_scale / mass_scale lambda); the rest goes
+ * to the pseudo velocities. */
+static void set_push(const step_ctx *ctx, const softness *soft, spoint *p, double s)
+{
+    double bias = soft->bias_rate * s, hold;
+    p->s_soft = s;
+    p->deep_push = 0;
+    p->bias = 0;
+    if (s >= 0) return;
+    if (bias < -ctx->push_max) bias = -ctx->push_max;
+    hold = (soft->mass_scale > 0 ? p->ln * soft->impulse_scale / soft->mass_scale : 1e300) + ctx->push_floor;
+    if (bias < -hold) {
+        p->deep_push = bias + hold;
+        bias = -hold;
+    }
+    p->bias = bias;
 }
 
 static double normal_update(const softness *soft, const spoint *p, double y, int is_soft)
@@ -701,14 +732,18 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         spoint *p = &c->p[k];
         vec da = anchor_now(A, p->rA, c->round_a), db = anchor_now(B, p->rB, c->round_b);
         s[k] = vdot(n, vsub(db, da)) + p->adjusted;
+        if (use_bias) {
+            set_push(ctx, soft, p, s[k]);
+            if (p->deep_push < 0) c->deep = 1;
+        }
     }
     if (c->block) {
         /* both rows at once: the change -E^-1 b (pogon's solver.c, BLOCK) */
         spoint *p0 = &c->p[0], *p1 = &c->p[1];
         int soft0, soft1;
         double rel0 = rel_speed(A, B, n, p0->cnA, p0->cnB), rel1 = rel_speed(A, B, n, p1->cnA, p1->cnB);
-        double b0 = normal_target(ctx, soft, s[0], rel0, use_bias, &soft0);
-        double b1 = normal_target(ctx, soft, s[1], rel1, use_bias, &soft1);
+        double b0 = normal_target(ctx, p0, s[0], rel0, use_bias, &soft0);
+        double b1 = normal_target(ctx, p1, s[1], rel1, use_bias, &soft1);
         double det = 1 - c->e01 * c->e10, y0 = (b0 - c->e01 * b1) / det, y1 = (b1 - c->e10 * b0) / det;
         double acc0 = normal_update(soft, p0, y0, soft0), acc1 = normal_update(soft, p1, y1, soft1);
         if (acc0 >= 0 && acc1 >= 0) {
@@ -720,7 +755,7 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
     for (k = 0; !done && k < c->count; ++k) {
         int i = order ? c->count - 1 - k : k, is_soft;
         spoint *p = &c->p[i];
-        double rel = rel_speed(A, B, n, p->cnA, p->cnB), b = normal_target(ctx, soft, s[i], rel, use_bias, &is_soft);
+        double rel = rel_speed(A, B, n, p->cnA, p->cnB), b = normal_target(ctx, p, s[i], rel, use_bias, &is_soft);
         normal_apply(ctx, A, B, p, normal_update(soft, p, b, is_soft), rel);
     }
     if (ctx->friction) {
@@ -732,6 +767,27 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
             p->lt = acc;
         }
     }
+}
+
+/* pogon's DEEP PUSH: the pseudo rows (linear only) of the constraints in the list, one
+ * sweep, forwards or backwards. */
+static void deep_sweep(ref_world *w, const step_ctx *ctx, const int *list, int n_list, int order, int backward)
+{
+    int k, j;
+    for (k = 0; k < n_list; ++k) {
+        constraint *c = &w->cons[list[backward ? n_list - 1 - k : k]];
+        sbody *A = sb_of(w, c->a), *B = sb_of(w, c->b);
+        for (j = 0; j < c->count; ++j) {
+            spoint *p = &c->p[(c->count == 2 && order) ? 1 - j : j];
+            double offset = p->s_soft > 0 ? p->s_soft * ctx->n : p->deep_push;
+            double b = vdot(c->n, vsub(B->pv, A->pv)) + offset, acc = p->pl - b;
+            if (acc < 0) acc = 0;
+            A->pv = vsub(A->pv, vscale(p->lnA, acc - p->pl));
+            B->pv = vadd(B->pv, vscale(p->lnB, acc - p->pl));
+            p->pl = acc;
+        }
+    }
+    w->dummy.pv = v2(0, 0);
 }
 
 void ref_step(ref_world *w)
@@ -752,6 +808,7 @@ void ref_step(ref_world *w)
     ctx.soft = make_soft(hertz, d->damping_ratio, h);
     ctx.soft_static = make_soft(2 * hertz, d->damping_ratio, h);
     ctx.push_max = d->push_max;
+    ctx.push_floor = d->push_max / 32;
     ctx.friction = d->friction;
     memset(&w->dummy, 0, sizeof w->dummy);
     w->dummy.dqc = 1;
@@ -766,6 +823,8 @@ void ref_step(ref_world *w)
         s->dqc = 1;
         s->dqs = 0;
         s->turns_anchors = 0;
+        s->pv = v2(0, 0);
+        s->pushed = 0;
     }
     for (i = 0; i < w->contact_count; ++i) {
         const contact *ct = &w->contacts[i];
@@ -784,6 +843,7 @@ void ref_step(ref_world *w)
         if (!c->round_a && c->a >= 0) w->sbodies[c->a].turns_anchors = 1;
         if (!c->round_b && c->b >= 0) w->sbodies[c->b].turns_anchors = 1;
         c->restitution = d->restitution ? ct->restitution : 0;
+        c->deep = 0;
         for (k = 0; k < c->count; ++k) {
             spoint *p = &c->p[k];
             const cpoint *cp = &ct->p[k];
@@ -806,6 +866,16 @@ void ref_step(ref_world *w)
             }
             p->ln = cp->ln;
             p->lt = d->friction ? cp->lt : 0;
+            p->pl = cp->pl;
+            p->deep_push = p->s_soft = p->bias = 0;
+            if (p->pl != 0) {
+                /* warm start of the pseudo velocities (DEEP PUSH) */
+                sbody *sa = sb_of(w, c->a), *sbb = sb_of(w, c->b);
+                c->deep = 1;
+                sa->pv = vsub(sa->pv, vscale(p->lnA, p->pl));
+                sbb->pv = vadd(sbb->pv, vscale(p->lnB, p->pl));
+                w->dummy.pv = v2(0, 0);
+            }
             p->max_ln = 0;
             p->relative_velocity = 0; /* set before the point first pushes (normal_apply) */
             {
@@ -836,10 +906,32 @@ void ref_step(ref_world *w)
             }
         }
         for (i = 0; i < n_cons; ++i) solve(w, &ctx, &w->cons[i], 1, order);
+        {
+            /* DEEP PUSH: the deep constraints and every other holding a body they push or a
+             * body with pseudo motion, 4 sweeps alternating direction */
+            int any = 0, n_list = 0, it;
+            for (i = 0; i < n_cons; ++i) any |= w->cons[i].deep;
+            if (any) {
+                for (i = 0; i < n_cons; ++i) {
+                    const constraint *c = &w->cons[i];
+                    if (!c->deep) continue;
+                    if (c->a >= 0) w->sbodies[c->a].pushed = sub + 1;
+                    if (c->b >= 0) w->sbodies[c->b].pushed = sub + 1;
+                }
+                for (i = 0; i < n_cons; ++i) {
+                    const constraint *c = &w->cons[i];
+                    const sbody *A = sb_of(w, c->a), *B = sb_of(w, c->b);
+                    if (c->deep || (c->a >= 0 && A->pushed == sub + 1) || (c->b >= 0 && B->pushed == sub + 1) || A->pv.x != 0 || A->pv.y != 0 ||
+                        B->pv.x != 0 || B->pv.y != 0)
+                        w->deep_list[n_list++] = i;
+                }
+                for (it = 0; it < 4; ++it) deep_sweep(w, &ctx, w->deep_list, n_list, order, it & 1);
+            }
+        }
         for (i = 0; i < w->count; ++i) {
             sbody *s = &w->sbodies[i];
             if (!s->dynamic) continue;
-            s->c = vadd(s->c, vscale(s->v, h));
+            s->c = vadd(s->c, vscale(vadd(s->v, s->pv), h));
             if (d->rotation && s->w != 0) {
                 s->a += s->w * h;
                 if (s->turns_anchors) {
@@ -889,6 +981,7 @@ void ref_step(ref_world *w)
         for (k = 0; k < c->count; ++k) {
             ct->p[k].ln = c->p[k].ln;
             ct->p[k].lt = c->p[k].lt;
+            ct->p[k].pl = c->p[k].deep_push < 0 ? c->p[k].pl : 0;
         }
     }
     for (i = 0; i < w->count; ++i) {
