@@ -93,9 +93,9 @@
  * overlapping 90 % side by side end touching instead of spread over 13 m; a resting point
  * (bias at the hold, to within rounding) never crosses the floor, so a resting pile never
  * runs the pass and gives the same bits as before. An island with a push_impulse does
- * not sleep (island.c): its bodies look at rest while the push moves them. Cost when no
- * point is deep: 3.3 % of the awake pyramid's instructions, 6 % of rain's (a falling pile
- * has a few deep points most steps).
+ * not sleep (island.c): its bodies look at rest while the push moves them. Cost: 2.0 % of
+ * the awake pyramid's instructions (no point deep: a comparison a point and pass), 5.7 %
+ * of rain's (a falling pile has a few deep points most steps).
  *
  * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
  * 1, odd ones 1 then 0); the block is the same in either order; and all rounding is
@@ -163,8 +163,6 @@ typedef struct constraint_point {
                                         positions have not moved since, so the next soft
                                         pass reuses it */
     pg_fix normal_impulse, tangent_impulse, max_normal_impulse;
-    pg_fix bias;                     /* the soft pass's push-out velocity, <= 0, capped by
-                                        the load (DEEP PUSH); this substep's */
     pg_fix deep_push;                /* < 0: the push-out past that cap, which the pseudo row
                                         adds to the pseudo relative speed; else 0 (DEEP
                                         PUSH); this substep's */
@@ -200,6 +198,8 @@ typedef struct softness {
     int32_t mass_scale, impulse_scale; /* Q2.30 */
     int32_t hold_rate;                 /* Q16 m/s per lambda: the bias that holds an impulse
                                           at rest, impulse_scale / mass_scale (DEEP PUSH) */
+    int64_t floor_depth;               /* from this separation up, |bias| <= the floor of
+                                          DEEP PUSH: no point there is deep */
 } softness;
 
 /* Byte offset of the constraints in the scratch: after the solver bodies, rounded up to
@@ -249,6 +249,13 @@ static softness make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
     return s;
 }
 
+
+/* The separation from which up |round(bias_rate s / 2^16)| <= floor (DEEP PUSH): there
+ * |bias_rate s| <= floor 2^16, so the rounded bias is within the floor too. */
+static int64_t floor_depth(const softness *s, pg_fix floor)
+{
+    return s->bias_rate > 0 ? -(((int64_t)floor * 65536) / s->bias_rate) : INT64_MIN;
+}
 
 /* One denominator, normalised: K scaled by 2^-shift into [2^30, 2^31), and its
  * reciprocal 2^62 / K31 in (2^31, 2^32], so every ratio num / K costs a multiply. */
@@ -639,49 +646,35 @@ PG__INLINE_ROW int64_t normal_speed(const constraint *c, const velocity *va, con
  * and impulse scales) or rigid. Speculative (s > 0): close the gap in one substep, no
  * more; touching, in the soft pass: push out at the soft bias rate, capped; in the
  * relax pass: no bias. */
-PG__INLINE_ROW int64_t normal_target(const step_context *ctx, const constraint_point *p, int64_t s, int64_t rel, int use_bias, int *is_soft)
+PG__INLINE_ROW int64_t normal_target(const step_context *ctx, const softness *soft, const constraint_point *p, int64_t s, int64_t rel,
+                                     int use_bias, int *is_soft)
 {
     *is_soft = 0;
     if (s > 0) return rel + s * ctx->n;
     if (use_bias) {
+        /* the bias, capped at push_max, less what goes to the pseudo velocities (DEEP PUSH) */
+        int64_t bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
+        if (bias < -ctx->push_max) bias = -ctx->push_max;
         *is_soft = 1;
-        return rel + p->bias;
+        return rel + bias - p->deep_push;
     }
     return rel;
 }
 
-/* A touching point's push-out for this substep's soft pass (DEEP PUSH): the bias
- * bias_rate s, capped at push_max, of which the velocity rows get at most the floor plus
- * what holds the point's impulse at rest (|lambda| < 2^29 and hold_rate < 2^31: the
- * product fits); the rest is deep_push, for the pseudo velocities. */
+/* A point's push-out for this substep's soft pass (DEEP PUSH): of the bias bias_rate s,
+ * capped at push_max, the velocity rows get at most the floor plus what holds the point's
+ * impulse at rest (|lambda| < 2^29 and hold_rate < 2^31: the product fits); the rest is
+ * deep_push, for the pseudo velocities, which normal_target takes off the bias. One
+ * comparison for a gap or a shallow point. */
 PG__INLINE_ROW void set_push(const step_context *ctx, const softness *soft, constraint_point *p, int64_t s)
 {
     int64_t bias, hold;
     p->deep_push = 0;
+    if (s >= soft->floor_depth) return; /* a gap, or shallow: all of it is velocity */
     bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
     if (bias < -ctx->push_max) bias = -ctx->push_max;
-    if (bias >= -ctx->push_floor) { /* a shallow point: all of it is velocity */
-        p->bias = (pg_fix)bias;
-        return;
-    }
     hold = pg__round_shift64((int64_t)p->normal_impulse * soft->hold_rate, 16) + ctx->push_floor;
-    if (bias < -hold) {
-        p->deep_push = (pg_fix)(bias + hold);
-        bias = -hold;
-    }
-    p->bias = (pg_fix)bias;
-}
-
-/* The soft pass's push-out of a point at separation s: none for a gap (the pseudo pass
- * reads the gap from the separation) or a touch at 0. */
-PG__INLINE_ROW void push_of(const step_context *ctx, const softness *soft, constraint_point *p, int64_t s)
-{
-    if (s < 0) {
-        set_push(ctx, soft, p, s);
-        return;
-    }
-    p->deep_push = 0;
-    p->bias = 0;
+    if (bias < -hold) p->deep_push = (pg_fix)(bias + hold);
 }
 
 /* The new accumulated lambda of a row whose unscaled change is -y: lambda - y (rigid), or
@@ -726,7 +719,7 @@ PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft,
                                  constraint_point *p, int64_t s, int64_t rel, int use_bias)
 {
     int is_soft;
-    int64_t b = normal_target(ctx, p, s, rel, use_bias, &is_soft);
+    int64_t b = normal_target(ctx, soft, p, s, rel, use_bias, &is_soft);
     note_approach(ctx, c, p, rel);
     normal_apply(c, va, vb, p, normal_update(soft, p, b, is_soft));
 }
@@ -758,8 +751,8 @@ PG__INLINE_PASS int solve_normal_pair(const step_context *ctx, const softness *s
     /* p0, p1 are the manifold's points 0, 1, or 1, 0 when swapped: the result is the same */
     const int32_t e01 = swapped ? c->e10 : c->e01, e10 = swapped ? c->e01 : c->e10;
     int soft0, soft1;
-    int64_t b0 = normal_target(ctx, p0, s0, rel0, use_bias, &soft0);
-    int64_t b1 = normal_target(ctx, p1, s1, rel1, use_bias, &soft1);
+    int64_t b0 = normal_target(ctx, soft, p0, s0, rel0, use_bias, &soft0);
+    int64_t b1 = normal_target(ctx, soft, p1, s1, rel1, use_bias, &soft1);
     int64_t y0, y1, acc0, acc1;
     /* both gaps open or opening and nothing held: each row, alone or together, would only
      * clamp at 0 (a quarter of the pyramid's pairs: boxes side by side in a row) */
@@ -779,10 +772,10 @@ PG__INLINE_PASS int solve_normal_pair(const step_context *ctx, const softness *s
 /* Whether a normal row at separation s and relative speed rel wants nothing of a point
  * that holds no impulse: its target b >= 0, so the rigid and the soft update both leave
  * lambda at 0, alone or solved as a block (see LAZY ROWS). */
-PG__INLINE_ROW int row_idle(const step_context *ctx, const constraint_point *p, int64_t s, int64_t rel, int use_bias)
+PG__INLINE_ROW int row_idle(const step_context *ctx, const softness *soft, const constraint_point *p, int64_t s, int64_t rel, int use_bias)
 {
     int is_soft;
-    return normal_target(ctx, p, s, rel, use_bias, &is_soft) >= 0;
+    return normal_target(ctx, soft, p, s, rel, use_bias, &is_soft) >= 0;
 }
 
 PG__INLINE_PASS int solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
@@ -797,12 +790,12 @@ PG__INLINE_PASS int solve_constraint(const step_context *ctx, constraint *c, sol
     if (second == NULL) {
         int64_t s = normal_separation(c, A, B, first, use_bias), rel = normal_speed(c, &va, &vb, first);
         if (use_bias) {
-            push_of(ctx, soft, first, s);
+            set_push(ctx, soft, first, s);
             c->deep |= first->deep_push < 0;
         }
         if (!c->rows_ready) {
             /* nothing held (LAZY ROWS): and while nothing is wanted, nothing moves */
-            if (row_idle(ctx, first, s, rel, use_bias)) return use_bias && c->deep; /* va, vb untouched: nothing to store */
+            if (row_idle(ctx, soft, first, s, rel, use_bias)) return use_bias && c->deep; /* va, vb untouched: nothing to store */
             prepare_rows(ctx, c);
         }
         solve_normal(ctx, soft, c, &va, &vb, first, s, rel, use_bias);
@@ -810,8 +803,8 @@ PG__INLINE_PASS int solve_constraint(const step_context *ctx, constraint *c, sol
         int64_t s0 = normal_separation(c, A, B, first, use_bias), s1 = normal_separation(c, A, B, second, use_bias);
         int64_t rel0, rel1;
         if (use_bias) {
-            push_of(ctx, soft, first, s0);
-            push_of(ctx, soft, second, s1);
+            set_push(ctx, soft, first, s0);
+            set_push(ctx, soft, second, s1);
             c->deep |= first->deep_push < 0 || second->deep_push < 0;
         }
         if (order) {
@@ -825,7 +818,7 @@ PG__INLINE_PASS int solve_constraint(const step_context *ctx, constraint *c, sol
         rel0 = normal_speed(c, &va, &vb, first);
         rel1 = normal_speed(c, &va, &vb, second);
         if (!c->rows_ready) {
-            if (row_idle(ctx, first, s0, rel0, use_bias) && row_idle(ctx, second, s1, rel1, use_bias)) return use_bias && c->deep;
+            if (row_idle(ctx, soft, first, s0, rel0, use_bias) && row_idle(ctx, soft, second, s1, rel1, use_bias)) return use_bias && c->deep;
             prepare_rows(ctx, c);
         }
         if (!c->block || !solve_normal_pair(ctx, soft, c, &va, &vb, first, second, s0, s1, rel0, rel1, use_bias, order)) {
@@ -1153,8 +1146,7 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
             }
         }
         c->rows_ready = 0;
-        c->deep = 0;
-        c->p[0].deep_push = c->p[1].deep_push = 0;
+        c->deep = 0; /* deep_push is set by every soft pass (set_push) before it is read */
         c->p[1].deep_impulse = 0;
         for (k = 0; k < c->count; ++k)
             if ((c->p[k].deep_impulse = (pg_fix)clamp_lambda(ct->points[k].push_impulse, 0, LAMBDA_MAX)) != 0) c->deep = held = *deep = 1;
@@ -1191,6 +1183,8 @@ void pg__solve(pg_world *w)
     ctx.soft_static = make_soft(pg_fix_add(hertz, hertz), w->def.contact_damping_ratio, ctx.n);
     ctx.push_max = w->def.contact_push_max;
     ctx.push_floor = ctx.push_max / 32;
+    ctx.soft.floor_depth = floor_depth(&ctx.soft, ctx.push_floor);
+    ctx.soft_static.floor_depth = floor_depth(&ctx.soft_static, ctx.push_floor);
     ctx.effects = effects;
     ctx.rotation = rotation;
     ctx.world = w;
