@@ -666,7 +666,7 @@ PG__INLINE_ROW int64_t normal_target(const step_context *ctx, const softness *so
  * impulse at rest (|lambda| < 2^29 and hold_rate < 2^31: the product fits); the rest is
  * deep_push, for the pseudo velocities, which normal_target takes off the bias. One
  * comparison for a gap or a shallow point. */
-PG__INLINE_ROW void set_push(const step_context *ctx, const softness *soft, constraint_point *p, int64_t s)
+PG__INLINE_ROW void set_push(const step_context *ctx, const softness *soft, constraint *c, constraint_point *p, int64_t s)
 {
     int64_t bias, hold;
     p->deep_push = 0;
@@ -674,7 +674,10 @@ PG__INLINE_ROW void set_push(const step_context *ctx, const softness *soft, cons
     bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
     if (bias < -ctx->push_max) bias = -ctx->push_max;
     hold = pg__round_shift64((int64_t)p->normal_impulse * soft->hold_rate, 16) + ctx->push_floor;
-    if (bias < -hold) p->deep_push = (pg_fix)(bias + hold);
+    if (bias < -hold) {
+        p->deep_push = (pg_fix)(bias + hold);
+        c->deep = 1;
+    }
 }
 
 /* The new accumulated lambda of a row whose unscaled change is -y: lambda - y (rigid), or
@@ -789,10 +792,7 @@ PG__INLINE_PASS int solve_constraint(const step_context *ctx, constraint *c, sol
     t.y = -c->n.x;
     if (second == NULL) {
         int64_t s = normal_separation(c, A, B, first, use_bias), rel = normal_speed(c, &va, &vb, first);
-        if (use_bias) {
-            set_push(ctx, soft, first, s);
-            c->deep |= first->deep_push < 0;
-        }
+        if (use_bias) set_push(ctx, soft, c, first, s);
         if (!c->rows_ready) {
             /* nothing held (LAZY ROWS): and while nothing is wanted, nothing moves */
             if (row_idle(ctx, soft, first, s, rel, use_bias)) return use_bias && c->deep; /* va, vb untouched: nothing to store */
@@ -803,9 +803,8 @@ PG__INLINE_PASS int solve_constraint(const step_context *ctx, constraint *c, sol
         int64_t s0 = normal_separation(c, A, B, first, use_bias), s1 = normal_separation(c, A, B, second, use_bias);
         int64_t rel0, rel1;
         if (use_bias) {
-            set_push(ctx, soft, first, s0);
-            set_push(ctx, soft, second, s1);
-            c->deep |= first->deep_push < 0 || second->deep_push < 0;
+            set_push(ctx, soft, c, first, s0);
+            set_push(ctx, soft, c, second, s1);
         }
         if (order) {
             constraint_point *swap = first;
