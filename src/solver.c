@@ -93,8 +93,8 @@
  * overlapping 90 % side by side end touching instead of spread over 13 m; a resting point
  * (bias at the hold, to within rounding) never crosses the floor, so a resting pile never
  * runs the pass and gives the same bits as before. An island with a push_impulse does
- * not sleep (island.c): its bodies look at rest while the push moves them. Cost: 2.0 % of
- * the awake pyramid's instructions (no point deep: a comparison a point and pass), 5.7 %
+ * not sleep (island.c): its bodies look at rest while the push moves them. Cost: 1.6 % of
+ * the awake pyramid's instructions (no point deep: a comparison a point and pass), 5.5 %
  * of rain's (a falling pile has a few deep points most steps).
  *
  * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
