@@ -83,8 +83,8 @@
  * at the hold plus a floor of push_max / 32 (set_push); past that cap the whole bias
  * goes to pseudo velocities (Bullet's split impulse, Chipmunk's bias velocity), which
  * move centres in the substeps of this step and are never momentum. Their rows (linear
- * only: a pseudo turn would be kept as an angle, and a single point off centre spun a
- * box) drive the relative normal pseudo speed to the excess, never pull, and may close a
+ * only: a pseudo turn would be kept as an angle; with angular terms the boxes of a 20-box
+ * column turned by up to 23 degrees within ten steps) drive the relative normal pseudo speed to the excess, never pull, and may close a
  * gap as a speculative row does; every contact of a body they push takes part, so a push
  * never drives a body through what it rests on. Gauss-Seidel converges along a chain one
  * link a sweep, so the pass runs 4 sweeps a substep, alternating direction, and is warm
