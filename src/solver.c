@@ -457,6 +457,7 @@ typedef struct step_context {
     const pg_world *world;   /* for the bodies' masses when a constraint's rows are set late */
     uint32_t dummy;          /* the solver slot of the static side */
     int *deep_seen;          /* set when a point pushes out past its velocity cap (DEEP PUSH) */
+    pg_vec2 gravity;         /* the acceleration gravity gives a body of gravity scale 1 */
 } step_context;
 
 /* The rows' coefficients of every point of c (normal and, with friction, tangent), the
@@ -1034,16 +1035,26 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
 {
     int64_t t0 = ctx->h_q32 * (int64_t)sub, t1 = ctx->h_q32 * (int64_t)(sub + 1u); /* <= 2^32 / step_hz + 8 */
     int64_t whole = 0; /* 1 when t1 >= 2^32 (see TIME_ONE); t0 < 2^32 always */
+    int64_t gx, gy;    /* the change the shared acceleration g makes: most bodies have it */
+    pg_vec2 g = ctx->gravity;
     uint32_t i;
     if (t1 >= TIME_ONE) {
         t1 -= TIME_ONE;
         whole = 1;
     }
+    gx = whole * g.x + pg__round_shift64(g.x * t1, 32) - pg__round_shift64(g.x * t0, 32);
+    gy = whole * g.y + pg__round_shift64(g.y * t1, 32) - pg__round_shift64(g.y * t0, 32);
     for (i = 0; i < n_active; ++i) {
         solver_body *sb = &bodies[active[i]];
         if (sb->accel.x != 0 || sb->accel.y != 0) {
-            int64_t vx = (int64_t)sb->v.x + whole * sb->accel.x + pg__round_shift64(sb->accel.x * t1, 32) - pg__round_shift64(sb->accel.x * t0, 32);
-            int64_t vy = (int64_t)sb->v.y + whole * sb->accel.y + pg__round_shift64(sb->accel.y * t1, 32) - pg__round_shift64(sb->accel.y * t0, 32);
+            int64_t vx, vy;
+            if (sb->accel.x == g.x && sb->accel.y == g.y) { /* the same formula, computed once */
+                vx = (int64_t)sb->v.x + gx;
+                vy = (int64_t)sb->v.y + gy;
+            } else {
+                vx = (int64_t)sb->v.x + whole * sb->accel.x + pg__round_shift64(sb->accel.x * t1, 32) - pg__round_shift64(sb->accel.x * t0, 32);
+                vy = (int64_t)sb->v.y + whole * sb->accel.y + pg__round_shift64(sb->accel.y * t1, 32) - pg__round_shift64(sb->accel.y * t0, 32);
+            }
             sb->v = pg__clamp_speed(w, pg_v2(pg__sat64(vx), pg__sat64(vy)));
         }
         if (sb->lin_damp != PG_ROT_ONE) {
@@ -1191,6 +1202,9 @@ void pg__solve(pg_world *w)
     ctx.dummy = dummy;
     ctx.sub = 0;
     ctx.deep_seen = &deep;
+    ctx.gravity = pg_v2_zero();
+    if ((effects & PG_EFFECT_GRAVITY) != 0)
+        ctx.gravity = pg_v2(pg_fix_mul(w->def.gravity.x, PG_FIX_ONE), pg_fix_mul(w->def.gravity.y, PG_FIX_ONE));
 
     /* the dummy static body */
     {
