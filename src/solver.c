@@ -1202,9 +1202,8 @@ void pg__solve(pg_world *w)
     ctx.dummy = dummy;
     ctx.sub = 0;
     ctx.deep_seen = &deep;
-    ctx.gravity = pg_v2_zero();
-    if ((effects & PG_EFFECT_GRAVITY) != 0)
-        ctx.gravity = pg_v2(pg_fix_mul(w->def.gravity.x, PG_FIX_ONE), pg_fix_mul(w->def.gravity.y, PG_FIX_ONE));
+    /* a body of gravity scale 1 and no force gets exactly this (pg_fix_mul by 1 is exact) */
+    ctx.gravity = (effects & PG_EFFECT_GRAVITY) != 0 ? w->def.gravity : pg_v2_zero();
 
     /* the dummy static body */
     {
