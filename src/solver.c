@@ -456,7 +456,8 @@ typedef struct step_context {
     uint32_t sub;            /* the substep the passes are in */
     const pg_world *world;   /* for the bodies' masses when a constraint's rows are set late */
     uint32_t dummy;          /* the solver slot of the static side */
-    int *deep_seen;          /* set when a point pushes out past its velocity cap (DEEP PUSH) */
+    int *deep_seen;          /* set when a point pushes out past its velocity cap or starts the
+                                step with a pseudo impulse (DEEP PUSH) */
     pg_vec2 gravity;         /* the acceleration gravity gives a body of gravity scale 1 */
 } step_context;
 
@@ -843,6 +844,19 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
     store_velocity(B, &vb);
 }
 
+/* A body's pseudo velocity as a velocity (no turn: the pseudo rows are linear), and back,
+ * clamped to the row kernel's bounds as store_velocity clamps v (DEEP PUSH). */
+static inline velocity load_pseudo(const solver_body *b)
+{
+    velocity v;
+    v.x = b->pv.x;
+    v.y = b->pv.y;
+    v.w = 0;
+    return v;
+}
+
+static inline void store_pseudo(solver_body *b, const velocity *v) { b->pv = pg_v2(clamp_velocity(v->x), clamp_velocity(v->y)); }
+
 /* One pseudo row (DEEP PUSH): the accumulated pseudo lambda becomes acc, clamped to
  * [0, LAMBDA_MAX], and the change moves the pseudo velocities along the normal only. */
 PG__INLINE_ROW void deep_row(velocity *pa, velocity *pb, constraint_point *p, int64_t acc)
@@ -864,10 +878,8 @@ PG__NOINLINE void solve_deep_push(const step_context *ctx, constraint *cons, con
     for (k = 0; k < n_list; ++k) {
         constraint *c = &cons[list[backward ? n_list - 1u - k : k]];
         solver_body *A = &bodies[c->a], *B = &bodies[c->b];
-        velocity pa, pb;
+        velocity pa = load_pseudo(A), pb = load_pseudo(B);
         int32_t j;
-        pa.x = A->pv.x; pa.y = A->pv.y; pa.w = 0;
-        pb.x = B->pv.x; pb.y = B->pv.y; pb.w = 0;
         for (j = 0; j < c->count; ++j) {
             constraint_point *p = &c->p[(c->count == 2 && order) ? 1 - j : j];
             /* a gap (the separation this substep's soft pass used): pseudo motion may
@@ -878,8 +890,8 @@ PG__NOINLINE void solve_deep_push(const step_context *ctx, constraint *cons, con
             if (!c->rows_ready) prepare_rows(ctx, c);  /* the coefficients, first needed now */
             deep_row(&pa, &pb, p, (int64_t)p->deep_impulse - b);
         }
-        A->pv = pg_v2(clamp_velocity(pa.x), clamp_velocity(pa.y));
-        B->pv = pg_v2(clamp_velocity(pb.x), clamp_velocity(pb.y));
+        store_pseudo(A, &pa);
+        store_pseudo(B, &pb);
     }
 }
 
@@ -914,12 +926,12 @@ PG__NOINLINE void warm_start_deep_push(constraint *cons, uint32_t n_cons, solver
         velocity pa, pb;
         int32_t k;
         if (!c->deep) continue;
-        pa.x = A->pv.x; pa.y = A->pv.y; pa.w = 0;
-        pb.x = B->pv.x; pb.y = B->pv.y; pb.w = 0;
+        pa = load_pseudo(A);
+        pb = load_pseudo(B);
         for (k = 0; k < c->count; ++k)
             if (c->p[k].deep_impulse != 0) apply_linear(&pa, &pb, c->p[k].deep_impulse, c->p[k].lnA_x, c->p[k].lnA_y, c->p[k].lnB_x, c->p[k].lnB_y);
-        A->pv = pg_v2(clamp_velocity(pa.x), clamp_velocity(pa.y));
-        B->pv = pg_v2(clamp_velocity(pb.x), clamp_velocity(pb.y));
+        store_pseudo(A, &pa);
+        store_pseudo(B, &pb);
     }
 }
 
@@ -1073,7 +1085,7 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
  * anchors, the rows' coefficients and the block couplings, from the state at the step's
  * start. Returns how many. Out of line: its divisions and wide products are set-up, done
  * once a step, and keeping them out of pg__solve leaves the substep loop to itself. */
-PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *bodies, constraint *cons, int *deep)
+PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *bodies, constraint *cons)
 {
     const pg_world *w = ctx->world;
     const uint32_t dummy = ctx->dummy, effects = ctx->effects;
@@ -1158,9 +1170,9 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
         }
         c->rows_ready = 0;
         c->deep = 0; /* deep_push is set by every soft pass (set_push) before it is read */
-        c->p[1].deep_impulse = 0;
         for (k = 0; k < c->count; ++k)
-            if ((c->p[k].deep_impulse = (pg_fix)clamp_lambda(ct->points[k].push_impulse, 0, LAMBDA_MAX)) != 0) c->deep = held = *deep = 1;
+            if ((c->p[k].deep_impulse = (pg_fix)clamp_lambda(ct->points[k].push_impulse, 0, LAMBDA_MAX)) != 0)
+                c->deep = held = *ctx->deep_seen = 1;
         c->block = 0; /* restitution reads it: a constraint whose rows never get set never pushed */
         if (held) prepare_rows(ctx, c);
     }
@@ -1269,7 +1281,7 @@ void pg__solve(pg_world *w)
     }
 
     /* constraints, in contact order */
-    n_cons = prepare_constraints(&ctx, bodies, cons, &deep);
+    n_cons = prepare_constraints(&ctx, bodies, cons);
     if (deep) warm_start_deep_push(cons, n_cons, bodies);
 
     for (sub = 0; sub < w->def.substeps; ++sub) {
