@@ -795,7 +795,7 @@ void ref_step(ref_world *w)
     const ref_def *d = &w->def;
     double n_per_s = (double)d->step_hz * d->substeps, h = 1.0 / n_per_s, hertz = d->hertz;
     step_ctx ctx;
-    int i, sub, n_cons = 0, k;
+    int i, sub, n_cons = 0, k, pass;
 
     /* 1. geometry of moving bodies (static ones keep theirs) */
     for (i = 0; i < w->count; ++i)
@@ -826,11 +826,16 @@ void ref_step(ref_world *w)
         s->pv = v2(0, 0);
         s->pushed = 0;
     }
+    /* as in pogon (ORDER): the contacts between two moving bodies first, then those with a
+     * side that cannot move, each group in contact order */
+    for (pass = 0; pass < 2; ++pass)
     for (i = 0; i < w->contact_count; ++i) {
         const contact *ct = &w->contacts[i];
         const body *A = &w->bodies[ct->a], *B = &w->bodies[ct->b];
-        constraint *c = &w->cons[n_cons++];
+        constraint *c;
         vec t = v2(ct->n.y, -ct->n.x);
+        if (pass != (!A->dynamic || !B->dynamic || A->im == 0 || B->im == 0)) continue;
+        c = &w->cons[n_cons++];
         c->a = A->dynamic ? ct->a : -1;
         c->b = B->dynamic ? ct->b : -1;
         c->contact = i;
