@@ -1083,7 +1083,9 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
     for (i = 0; i < n_active; ++i) {
         solver_body *sb = &bodies[active[i]];
         /* what the contacts did to this body in the last substep (WARM START): from
-         * just before its warm start to the end of its relax pass, |.| <= 2^30 */
+         * just before its warm start to the end of its relax pass. Both ends are within
+         * the kernel's bounds (v_pre after an angular integration within +-2^31), so
+         * each difference is below 2^32 and the sums below are clamped like a store */
         int64_t dvx = (int64_t)sb->v.x - sb->v_pre.x, dvy = (int64_t)sb->v.y - sb->v_pre.y, dw = (int64_t)sb->w - sb->w_pre;
         if (sb->accel.x != 0 || sb->accel.y != 0) {
             int64_t vx, vy;
@@ -1115,8 +1117,8 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
     }
 }
 
-/* Whether contact ct has a side that cannot move in this step: static, kinematic or
- * asleep (ORDER). */
+/* Whether a contact between A and B has a side that cannot move in this step: static,
+ * kinematic or asleep (ORDER). */
 static int one_sided(const pg_body *A, const pg_body *B)
 {
     return !pg__body_is_active(A) || !pg__body_is_active(B) || A->inv_mass == 0 || B->inv_mass == 0;
