@@ -116,8 +116,9 @@
  * 20 m/s went 1.43 half heights into the ground, its centre below the surface, and in
  * random piles light bodies were pressed through wall faces. With the ground last, the
  * pinched body leaves each pass at rest against it, and the heavy body's remaining
- * approach closes on the light one, which both can answer (test_pinched_body_stays_above_
- * ground: 0.83 half heights at worst where it was 1.74).
+ * approach closes on the light one, which both can answer
+ * (test_pinched_body_is_not_pressed_through: 0.83 half sizes at worst where it was 1.74,
+ * and the same against a wall without gravity).
  *
  * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
  * 1, odd ones 1 then 0); the block is the same in either order; and all rounding is
