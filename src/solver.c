@@ -1118,13 +1118,6 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
     }
 }
 
-/* Whether a contact between A and B has a side that cannot move in this step: static,
- * kinematic or asleep (ORDER). */
-static int one_sided(const pg_body *A, const pg_body *B)
-{
-    return !pg__body_is_active(A) || !pg__body_is_active(B) || A->inv_mass == 0 || B->inv_mass == 0;
-}
-
 /* Constraint c for contact i (which has points and a moving side): anchors, lever arms and
  * impulses from the state at the step's start, and the rows' coefficients when a point
  * holds an impulse (LAZY ROWS). */
@@ -1228,8 +1221,10 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
     for (i = 0; i < w->contact_count; ++i) {
         const pg_contact *ct = &w->contacts[i];
         const pg_body *A = &w->bodies[ct->body_a], *B = &w->bodies[ct->body_b];
-        if (ct->point_count == 0 || (!pg__body_is_active(A) && !pg__body_is_active(B))) continue;
-        if (one_sided(A, B)) later[n_later++] = i;
+        int activeA = pg__body_is_active(A), activeB = pg__body_is_active(B);
+        if (ct->point_count == 0 || (!activeA && !activeB)) continue;
+        /* a side that cannot move in this step: static, kinematic or asleep */
+        if (!activeA || !activeB || A->inv_mass == 0 || B->inv_mass == 0) later[n_later++] = i;
         else prepare_constraint(ctx, bodies, &cons[n_cons++], i);
     }
     for (i = 0; i < n_later; ++i) prepare_constraint(ctx, bodies, &cons[n_cons++], later[i]);
