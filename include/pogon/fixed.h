@@ -94,8 +94,11 @@ PG__STATIC_ASSERT(sizeof(pg_fix) == 4 && sizeof(pg_angle) == 4, widths);
  * Requires |x| + 2^(n-1) <= INT64_MAX, true for every caller in pogon. */
 static inline int64_t pg__round_shift64(int64_t x, int n)
 {
+    /* x >> 63 is -1 for a negative x and 0 otherwise (arithmetic shift, pinned above):
+     * the same as subtracting (x < 0), one operation fewer in wasm, where a comparison
+     * yields an i32 that must be widened */
     int64_t half = (int64_t)1 << (n - 1);
-    return (x + half - (int64_t)(x < 0)) >> n;
+    return (x + half + (x >> 63)) >> n;
 }
 
 /* Clamp an int64 to the legal pg_fix range. */
