@@ -335,9 +335,12 @@ pg_result pg_world_step(pg_world *world)
      * body, and the sleep pass would touch no timer. Skip them, so a sleeping scene costs a
      * pass over its bodies and contacts, not a step. Every command that changes what a step
      * would do wakes a body or dirties its geometry; pg__contacts_at_rest is the safety net
-     * for shapes and filters. test_world_at_rest_skips_step_exactly and the replay corpus
-     * (recorded through the full step) check that the state is the same. */
-    if (moving == 0 && pg__contacts_at_rest(world)) {
+     * for shapes and filters, run only after one of them changed (contacts_checked): it
+     * passes over every contact, most of a sleeping pyramid's step (21 000 of 25 000
+     * instructions). test_world_at_rest_skips_step_exactly and the replay corpus (recorded
+     * through the full step) check that the state is the same. */
+    if (moving == 0 && (world->contacts_checked || pg__contacts_at_rest(world))) {
+        world->contacts_checked = 1;
         world->stats.pair_count = 0;
         world->frame += 1u;
         return PG_OK;
@@ -345,6 +348,7 @@ pg_result pg_world_step(pg_world *world)
     /* 2. broadphase + narrowphase + contact bookkeeping */
     r = pg__update_contacts(world);
     if (r != PG_OK) return r;
+    world->contacts_checked = 1; /* the new list holds only pairs that should collide */
     /* 3. forces, solver, integration */
     pg__solve(world);
     /* 4. islands and sleep */

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 
 #include "pogon/pogon.h"
+#include "pogon/replay.h"
 #include "pg_test_world.h"
 
 #define Q32 4294967296.0
@@ -282,12 +283,13 @@ static void test_sliding_box_decelerates_at_mu_g(void **state)
  * same in both while it settles, falls asleep and rests, when a filter change ends a
  * contact and when an impulse wakes it. (The replay corpus checks the same against hashes
  * recorded through the full step: pyramid.pgr rests for 191 of its frames.) */
-static void build_rest_stack(test_world *t, pg_body_id *box, int with_sentinel)
+static pg_body_id build_rest_stack(test_world *t, pg_body_id *box, int with_sentinel)
 {
     pg_shape_def sd = pg_default_shape_def();
+    pg_body_id ground;
     int i;
     *t = make_world(PG_EFFECTS_ALL);
-    make_ground(t->w, sd.friction, 0);
+    ground = make_ground(t->w, sd.friction, 0);
     for (i = 0; i < 3; ++i) {
         pg_body_def bd = dynamic_at(0, 0.5 + i);
         assert_int_equal(pg_make_box(t->w, &bd, &sd, PG_FIX_ONE, PG_FIX_ONE, &box[i]), PG_OK);
@@ -300,6 +302,7 @@ static void build_rest_stack(test_world *t, pg_body_id *box, int with_sentinel)
         kd.allow_sleep = 0;
         assert_int_equal(pg_make_box(t->w, &kd, &sd, PG_FIX_ONE, PG_FIX_ONE, &k), PG_OK);
     }
+    return ground;
 }
 
 static void expect_same_stack(const test_world *a, const pg_body_id *ba, const test_world *b, const pg_body_id *bb, const char *when)
@@ -327,8 +330,8 @@ static void test_world_at_rest_skips_step_exactly(void **state)
     pg_body_id ba[3], bb[3];
     int i, ends = 0;
     (void)state;
-    build_rest_stack(&a, ba, 0);
-    build_rest_stack(&b, bb, 1);
+    (void)build_rest_stack(&a, ba, 0);
+    (void)build_rest_stack(&b, bb, 1);
     for (i = 0; i < 200; ++i) {
         step_n(a.w, 1);
         step_n(b.w, 1);
@@ -358,6 +361,60 @@ static void test_world_at_rest_skips_step_exactly(void **state)
     }
     free_world(&a);
     free_world(&b);
+}
+
+/* A world at rest re-checks its contacts only after an edit that can end one (world.c:
+ * contacts_checked). A filter change on the static ground wakes nothing, so the sleeping
+ * world takes the short step; it must still end the ground contact as a full step does,
+ * and so must a sleeping world the changed state is restored into. */
+static void test_world_at_rest_sees_a_static_filter_change(void **state)
+{
+    test_world a, b, c;
+    pg_body_id ba[3], bb[3], bc[3], ga, gb;
+    void *snap;
+    size_t size, written;
+    uint32_t ends[3] = {0, 0, 0};
+    int i;
+    (void)state;
+    ga = build_rest_stack(&a, ba, 0);
+    gb = build_rest_stack(&b, bb, 1);
+    (void)build_rest_stack(&c, bc, 0);
+    step_n(a.w, 200);
+    step_n(b.w, 200);
+    step_n(c.w, 200);
+    expect_same_stack(&a, ba, &b, bb, "settled");
+    expect_same_stack(&a, ba, &c, bc, "settled");
+    assert_int_equal(pg_world_get_stats(a.w).awake_body_count, 0);
+    assert_int_equal(pg_world_get_stats(c.w).awake_body_count, 0);
+    assert_int_equal(pg_body_set_filter(a.w, ga, 1u, 0u), PG_OK);
+    assert_int_equal(pg_body_set_filter(b.w, gb, 1u, 0u), PG_OK);
+    size = pg_world_snapshot_size(a.w);
+    snap = malloc(size);
+    assert_non_null(snap);
+    assert_int_equal(pg_world_snapshot_save(a.w, snap, size, &written), PG_OK);
+    assert_int_equal(pg_world_snapshot_restore(c.w, snap, written), PG_OK);
+    free(snap);
+    for (i = 0; i < 5; ++i) {
+        uint32_t n;
+        step_n(a.w, 1);
+        step_n(b.w, 1);
+        step_n(c.w, 1);
+        (void)pg_world_end_events(a.w, &n);
+        ends[0] += n;
+        (void)pg_world_end_events(b.w, &n);
+        ends[1] += n;
+        (void)pg_world_end_events(c.w, &n);
+        ends[2] += n;
+        expect_same_stack(&a, ba, &b, bb, "after the ground's filter change");
+        expect_same_stack(&a, ba, &c, bc, "restored after the ground's filter change");
+    }
+    assert_int_equal(ends[0], 1);
+    assert_int_equal(ends[1], 1);
+    assert_int_equal(ends[2], 1);
+    assert_int_equal(pg_world_get_stats(a.w).touching_contact_count, 2);
+    free_world(&a);
+    free_world(&b);
+    free_world(&c);
 }
 
 /* ---- friction on a slope --------------------------------------------------------------------------- */
@@ -1375,6 +1432,7 @@ int main(void)
         cmocka_unit_test(test_box_comes_to_rest),
         cmocka_unit_test(test_sliding_box_decelerates_at_mu_g),
         cmocka_unit_test(test_world_at_rest_skips_step_exactly),
+        cmocka_unit_test(test_world_at_rest_sees_a_static_filter_change),
         cmocka_unit_test(test_slope_static_friction_holds),
         cmocka_unit_test(test_slope_kinetic_friction),
         cmocka_unit_test(test_slope_friction_effect_off),
