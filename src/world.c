@@ -336,8 +336,9 @@ pg_result pg_world_step(pg_world *world)
      * pass over its bodies and contacts, not a step. Every command that changes what a step
      * would do wakes a body or dirties its geometry; pg__contacts_at_rest is the safety net
      * for shapes and filters, run only after one of them changed (contacts_checked): it
-     * passes over every contact, most of a sleeping pyramid's step (21 000 of 25 000
-     * instructions). test_world_at_rest_skips_step_exactly and the replay corpus (recorded
+     * passes over every contact, and run every step it was 21 000 of a sleeping pyramid's
+     * 25 000 instructions. test_world_at_rest_skips_step_exactly,
+     * test_world_at_rest_sees_a_static_filter_change and the replay corpus (recorded
      * through the full step) check that the state is the same. */
     if (moving == 0 && (world->contacts_checked || pg__contacts_at_rest(world))) {
         world->contacts_checked = 1;
