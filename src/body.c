@@ -161,7 +161,6 @@ pg_result pg_body_destroy(pg_world *world, pg_body_id id)
     if (world == NULL) return PG_ERR_NULL;
     if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_body_destroy: body handle is stale or invalid");
     pg__remove_body_contacts(world, id.index);
-    pg__contacts_edited(world);
     for (s = b->first_shape; s != PG_NULL_INDEX; s = next) {
         next = world->shapes[s].next;
         world->shapes[s].used = 0;
@@ -445,7 +444,6 @@ pg_result pg_body_set_type(pg_world *world, pg_body_id id, pg_body_type type)
         if (why != NULL) return pg__fail(world, PG_ERR_ENVELOPE, why);
     }
     pg__remove_body_contacts(world, id.index); /* pairs are found again next step */
-    pg__contacts_edited(world);
     b->type = type;
     if (type == PG_BODY_STATIC) b->v = pg_v2_zero(), b->w = 0;
     b->flags |= PG_BODY_FLAG_AWAKE | PG_BODY_FLAG_GEOMETRY_DIRTY;
@@ -547,7 +545,9 @@ pg_result pg_body_set_filter(pg_world *world, pg_body_id id, uint32_t category, 
         world->shapes[s].category = category;
         world->shapes[s].mask = mask;
     }
-    pg__contacts_edited(world); /* a static body's pairs may now be filtered out */
+    /* its pairs are looked at again in the next step even where nothing wakes (a static
+     * body): a pair the filter now excludes must end (pg_world_step) */
+    b->flags |= PG_BODY_FLAG_GEOMETRY_DIRTY;
     pg__wake_body(world, id.index);
     return PG_OK;
 }

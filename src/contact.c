@@ -79,17 +79,6 @@ static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact
     }
 }
 
-int pg__contacts_at_rest(const pg_world *w)
-{
-    uint32_t i;
-    for (i = 0; i < w->contact_count; ++i) {
-        const pg_contact *c = &w->contacts[i];
-        if (!w->shapes[c->shape_a].used || !w->shapes[c->shape_b].used || !shapes_should_collide(w, c->shape_a, c->shape_b))
-            return 0;
-    }
-    return 1;
-}
-
 static int body_was_active(const pg_world *w, uint32_t shape) { return (w->proxy_flags[shape] & PG_PROXY_ACTIVE) != 0; }
 
 pg_result pg__update_contacts(pg_world *w)

@@ -266,7 +266,6 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
         s->generation = generation == 0 ? 1u : generation;
     }
     s->used = 1;
-    pg__contacts_edited(world);
     s->body = body.index;
     s->next = PG_NULL_INDEX;
     s->geometry = *geometry;
@@ -314,7 +313,6 @@ pg_result pg_shape_destroy(pg_world *world, pg_shape_id id)
     for (link = &b->first_shape; *link != id.index; link = &world->shapes[*link].next) {}
     *link = s->next;
     s->used = 0;
-    pg__contacts_edited(world);
     b->shape_count -= 1u;
     world->shape_count -= 1u;
     pg__body_update_mass(world, s->body);

@@ -788,7 +788,6 @@ pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_
     world->body_count = bodies;
     world->begin_count = 0;
     world->end_count = 0;
-    pg__contacts_edited(world);
     world->last_error[0] = '\0';
     return PG_OK;
 }

@@ -139,13 +139,6 @@ struct pg_world {
     pg_contact_event *begin_events, *end_events;
     uint32_t begin_count, end_count;
 
-    /* 1 when every contact is known to join two used shapes that should collide: set by
-     * the contact update and by pg__contacts_at_rest, cleared (pg__contacts_edited) by
-     * every edit of shapes, filters or body types and by a restore. Not state: it only
-     * lets a world at rest skip re-checking its contacts, a check whose result is a
-     * function of the state (pg_world_step). */
-    int contacts_checked;
-
     char last_error[160];
 };
 
@@ -160,10 +153,6 @@ pg_result pg__fail_limit(const pg_world *world, pg_result r, const char *what, p
 pg_body *pg__body(const pg_world *world, pg_body_id id); /* NULL if stale */
 pg_shape *pg__shape(const pg_world *world, pg_shape_id id);
 void pg__push_end_event(pg_world *world, const pg_contact *c);
-
-/* world.c: a shape, a filter or a body's type changed: the contacts must be checked again
- * before a world at rest may skip its step */
-static inline void pg__contacts_edited(pg_world *world) { world->contacts_checked = 0; }
 
 /* body.c */
 void pg__body_update_mass(pg_world *world, uint32_t body_index);
@@ -209,7 +198,6 @@ pg_result pg__update_contacts(pg_world *world);
 int pg__shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb);
 /* When no body is awake and no geometry is dirty, pg__update_contacts keeps every contact
  * as it is unless a shape has gone or a filter has changed since: this says it would. */
-int pg__contacts_at_rest(const pg_world *world);
 void pg__remove_body_contacts(pg_world *world, uint32_t body_index);
 void pg__refresh_contact_materials(pg_world *world, uint32_t body_index); /* after a friction/restitution change */
 

@@ -363,10 +363,10 @@ static void test_world_at_rest_skips_step_exactly(void **state)
     free_world(&b);
 }
 
-/* A world at rest re-checks its contacts only after an edit that can end one (world.c:
- * contacts_checked). A filter change on the static ground wakes nothing, so the sleeping
- * world takes the short step; it must still end the ground contact as a full step does,
- * and so must a sleeping world the changed state is restored into. */
+/* A world at rest takes the short step only while no body is awake or has dirty geometry
+ * (world.c). A filter change on the static ground wakes nothing; it must still end the
+ * ground contact as a full step does (it dirties the ground), and so must a sleeping world
+ * the changed state is restored into. */
 static void test_world_at_rest_sees_a_static_filter_change(void **state)
 {
     test_world a, b, c;
