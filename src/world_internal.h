@@ -196,8 +196,6 @@ pg_result pg__validate_geometry(const pg_geometry *g);             /* what pg_sh
 pg_result pg__update_contacts(pg_world *world);
 /* Whether shapes sa and sb may touch: different bodies, one dynamic, filters agree. */
 int pg__shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb);
-/* When no body is awake and no geometry is dirty, pg__update_contacts keeps every contact
- * as it is unless a shape has gone or a filter has changed since: this says it would. */
 void pg__remove_body_contacts(pg_world *world, uint32_t body_index);
 void pg__refresh_contact_materials(pg_world *world, uint32_t body_index); /* after a friction/restitution change */
 
