@@ -77,6 +77,7 @@ typedef struct spoint {
     double friction_ratio, relative_velocity;
     double approach_start, approach_accel; /* pogon's APPROACH: at the step's start, and gravity's part per second */
     double ln, lt, max_ln;
+    double Kn, Kt;              /* the rows' effective inverse masses */
     double s_soft, bias, deep_push, pl; /* DEEP PUSH: the soft pass's separation, its velocity
                                            bias, the excess for the pseudo row, and its lambda */
 } spoint;
@@ -93,6 +94,8 @@ typedef struct constraint {
     int block;        /* the two normal rows solved together, as pogon does */
     double e01, e10;  /* what a unit of lambda on point 1 does to point 0's normal speed, and back */
     int deep;         /* DEEP PUSH: a point has pushed past its velocity cap in this step */
+    int central;      /* two points, friction on: one friction row at the mean anchor, in
+                         p[0] (pogon's CENTRAL FRICTION) */
     spoint p[2];
 } constraint;
 
@@ -759,9 +762,10 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         normal_apply(ctx, A, B, p, normal_update(soft, p, b, is_soft), rel);
     }
     if (ctx->friction) {
-        for (k = 0; k < c->count; ++k) {
-            spoint *p = &c->p[order ? c->count - 1 - k : k];
-            double vt = rel_speed(A, B, t, p->ctA, p->ctB), max_f = p->friction_ratio * p->ln, acc = p->lt - vt;
+        for (k = 0; k < (c->central ? 1 : c->count); ++k) {
+            spoint *p = c->central ? &c->p[0] : &c->p[order ? c->count - 1 - k : k];
+            double max_f = c->central ? c->p[0].friction_ratio * c->p[0].ln + c->p[1].friction_ratio * c->p[1].ln : p->friction_ratio * p->ln;
+            double vt = rel_speed(A, B, t, p->ctA, p->ctB), acc = p->lt - vt;
             acc = acc < -max_f ? -max_f : acc > max_f ? max_f : acc;
             apply(A, B, acc - p->lt, p->ltA, p->ltB, p->gtA, p->gtB);
             p->lt = acc;
@@ -849,10 +853,10 @@ void ref_step(ref_world *w)
         if (!c->round_b && c->b >= 0) w->sbodies[c->b].turns_anchors = 1;
         c->restitution = d->restitution ? ct->restitution : 0;
         c->deep = 0;
+        c->central = c->count == 2 && d->friction;
         for (k = 0; k < c->count; ++k) {
             spoint *p = &c->p[k];
             const cpoint *cp = &ct->p[k];
-            double Kn, Kt;
             /* anchors on each body's own surface; the manifold point is midway between them */
             p->rA = vsub(vsub(cp->p, vscale(c->n, 0.5 * cp->sep)), A->c);
             p->rB = vsub(vadd(cp->p, vscale(c->n, 0.5 * cp->sep)), B->c);
@@ -861,14 +865,15 @@ void ref_step(ref_world *w)
             p->cnB = vcross(p->rB, c->n);
             p->ctA = vcross(p->rA, t);
             p->ctB = vcross(p->rB, t);
-            row(A, B, p->cnA, p->cnB, c->n, d->rotation, &p->lnA, &p->lnB, &p->gnA, &p->gnB, &Kn);
+            if (c->central && k == 1) {
+                /* the central row: at the mean anchor, holding what both points stored */
+                c->p[0].ctA = 0.5 * (c->p[0].ctA + p->ctA);
+                c->p[0].ctB = 0.5 * (c->p[0].ctB + p->ctB);
+            }
+            row(A, B, p->cnA, p->cnB, c->n, d->rotation, &p->lnA, &p->lnB, &p->gnA, &p->gnB, &p->Kn);
             p->friction_ratio = 0;
             p->ltA = p->ltB = v2(0, 0);
             p->gtA = p->gtB = 0;
-            if (d->friction) {
-                row(A, B, p->ctA, p->ctB, t, d->rotation, &p->ltA, &p->ltB, &p->gtA, &p->gtB, &Kt);
-                p->friction_ratio = Kn > 0 ? ct->friction * Kt / Kn : 0;
-            }
             p->ln = cp->ln;
             p->lt = d->friction ? cp->lt : 0;
             p->pl = cp->pl;
@@ -889,6 +894,20 @@ void ref_step(ref_world *w)
                 p->approach_start = rel_speed(sa, sbb, c->n, p->cnA, p->cnB);
                 p->approach_accel = vdot(c->n, vsub(gb, ga));
             }
+        }
+        /* the friction rows once the anchors are known: one per point, or the central row
+         * in p[0], whose bound takes each point's normal impulse times Kt / Kn of its own */
+        for (k = 0; d->friction && k < c->count; ++k) {
+            spoint *p = &c->p[k];
+            double Kt = 0;
+            if (!c->central || k == 0) row(A, B, p->ctA, p->ctB, t, d->rotation, &p->ltA, &p->ltB, &p->gtA, &p->gtB, &Kt);
+            else Kt = c->p[0].Kt;
+            p->Kt = Kt;
+            p->friction_ratio = p->Kn > 0 ? ct->friction * Kt / p->Kn : 0;
+        }
+        if (c->central) {
+            c->p[0].lt += c->p[1].lt;
+            c->p[1].lt = 0;
         }
         setup_block(c);
     }
@@ -986,6 +1005,11 @@ void ref_step(ref_world *w)
         for (k = 0; k < c->count; ++k) {
             ct->p[k].ln = c->p[k].ln;
             ct->p[k].lt = c->p[k].lt;
+            if (c->central) {
+                /* split in proportion to the normal impulses, as pogon stores it */
+                double total = c->p[0].lt, sum = c->p[0].ln + c->p[1].ln, part0 = sum > 0 ? total * c->p[0].ln / sum : 0.5 * total;
+                ct->p[k].lt = k == 0 ? part0 : total - part0;
+            }
             ct->p[k].pl = c->p[k].deep_push < 0 ? c->p[k].pl : 0;
         }
     }
