@@ -866,7 +866,7 @@ void ref_step(ref_world *w)
             p->ctA = vcross(p->rA, t);
             p->ctB = vcross(p->rB, t);
             if (c->central && k == 1) {
-                /* the central row: at the mean anchor, holding what both points stored */
+                /* the central friction row's lever arms: those of the mean anchor */
                 c->p[0].ctA = 0.5 * (c->p[0].ctA + p->ctA);
                 c->p[0].ctB = 0.5 * (c->p[0].ctB + p->ctB);
             }
