@@ -643,11 +643,16 @@ static inline void anchor_now(const solver_body *b, pg_vec2 r, int round, int64_
 
 static inline int64_t clamp_lambda(int64_t acc, int64_t lo, int64_t hi) { return acc < lo ? lo : acc > hi ? hi : acc; }
 
-/* One friction row whose tangent "impulse" stays within +-max_f: f (Kt/Kn) lambda_n, or
- * for a manifold's central row the sum of that over both points (CENTRAL FRICTION). */
-PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point *p, pg_dir t, int64_t max_f)
+/* A point's part of its friction row's bound, f (Kt/Kn) lambda_n in Q32 (solve_friction). */
+static inline int64_t friction_bound(const constraint_point *p) { return (int64_t)p->friction_ratio * p->normal_impulse; }
+
+/* One friction row whose tangent "impulse" stays within +-round(bound / 2^16): bound is
+ * the Q16 ratio f (Kt/Kn) times the Q16 lambda_n of the row's point, or for a manifold's
+ * central row the sum of that over both points (CENTRAL FRICTION); each product is below
+ * 2^31 2^29, so the sum of two fits int64 and is rounded once. */
+PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point *p, pg_dir t, int64_t bound)
 {
-    int64_t acc;
+    int64_t max_f = pg__round_shift64(bound, 16), acc;
     if (max_f > LAMBDA_MAX) max_f = LAMBDA_MAX;
     if (max_f == 0) {
         /* an unloaded contact: the bound is 0 whatever the sliding speed */
@@ -686,7 +691,7 @@ PG__INLINE_PASS int64_t normal_separation(const constraint *c, const solver_body
     anchor_now(A, p->rA, c->round_a, &ax, &ay);
     anchor_now(B, p->rB, c->round_b, &bx, &by);
     s = pg__round_shift64(c->n.x * (bx - ax) + c->n.y * (by - ay), 30) + p->adjusted_separation;
-    if (!use_bias) p->separation = s;
+    p->separation = s;
     return s;
 }
 
@@ -697,7 +702,8 @@ PG__INLINE_PASS int64_t normal_separation(const constraint *c, const solver_body
  * body) and one a point, where turning each anchor took five a point; 2.6 % of the awake
  * pyramid's instructions (callgrind, clang: 487.8 -> 475.3 M per 100 steps). A round
  * side does not turn its anchor, so its n is exact; at the step's start (dp = 0, no turn)
- * the result is exactly prepare_constraint's. Bounds: |n . (dpB - dpA)| < 2^30 2^30.5
+ * the result is exactly prepare_constraint's. A single point keeps normal_separation:
+ * turning the normal costs it four products more than turning its anchor. Bounds: |n . (dpB - dpA)| < 2^30 2^30.5
  * and |(R^T n) . r| < 2^30 (1 + 2^-29) 2^31.5 (a restored snapshot's anchors may sit at
  * the edge of the range), so the sum of the three fits int64. */
 static inline void normal_seen_from(const solver_body *b, pg_dir n, int round, int64_t *x, int64_t *y)
@@ -927,16 +933,11 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
      * resting depth; in Q16.16 it may never get there (the last of the sinking moves a
      * body less than half a position step per substep), and friction came out 1.3% weak. */
     if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
-        /* the bounds, Q16 ratio times Q16 lambda: each product below 2^31 2^29, so the
-         * central row's sum of two fits int64 and is rounded once */
         if (c->central_friction) {
-            const constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
-            int64_t bound = (int64_t)p0->friction_ratio * p0->normal_impulse + (int64_t)p1->friction_ratio * p1->normal_impulse;
-            solve_friction(&va, &vb, &c->p[0], t, pg__round_shift64(bound, 16));
+            solve_friction(&va, &vb, &c->p[0], t, friction_bound(&c->p[0]) + friction_bound(&c->p[1]));
         } else {
-            solve_friction(&va, &vb, first, t, pg__round_shift64((int64_t)first->friction_ratio * first->normal_impulse, 16));
-            if (second != NULL)
-                solve_friction(&va, &vb, second, t, pg__round_shift64((int64_t)second->friction_ratio * second->normal_impulse, 16));
+            solve_friction(&va, &vb, first, t, friction_bound(first));
+            if (second != NULL) solve_friction(&va, &vb, second, t, friction_bound(second));
         }
     }
     store_velocity(A, &va);
