@@ -1344,15 +1344,25 @@ void pg__solve(pg_world *w)
     step_context ctx;
     const uint32_t effects = w->def.effects;
     const int rotation = (effects & PG_EFFECT_ROTATION) != 0;
-    pg_fix hertz;
+    pg_fix hertz, hertz_static, hertz_cap;
 
     ctx.n = w->def.step_hz * w->def.substeps;
     ctx.h_q32 = (int64_t)(((UINT64_C(1) << 32) + ctx.n / 2u) / ctx.n);
     ctx.angle_per_w = (INT64_C(174992710548) + (int64_t)ctx.n / 2) / (int64_t)ctx.n; /* 2^40 / (2 pi) / n */
+    /* SOFTNESS CAP: no softness is stiffer than a quarter of the substep rate, omega h =
+     * pi / 2 (Box2D v3's cap on its contact hertz). The stiffer softness of a side that
+     * cannot move or a 4:1 pair, twice the contact's, is capped too: at the defaults (30
+     * Hz, 240 substeps a second) it is exactly at the cap, but at 2 substeps (60 Hz at 120
+     * a second, omega h = pi), at 1, or at 60 Hz it was past it, where the soft step is
+     * not stable: a heavy box on a light one shook at 0.5-1.5 m/s and at 2 substeps fell
+     * through it (test_mass_ratio_100_within_the_softness_cap). */
+    hertz_cap = (pg_fix)((int64_t)ctx.n * 65536 / 4);
     hertz = w->def.contact_hertz;
-    if ((int64_t)hertz * 4 > (int64_t)ctx.n * 65536) hertz = (pg_fix)((int64_t)ctx.n * 65536 / 4);
+    if ((int64_t)hertz * 4 > (int64_t)ctx.n * 65536) hertz = hertz_cap;
+    hertz_static = pg_fix_add(hertz, hertz);
+    if ((int64_t)hertz_static * 4 > (int64_t)ctx.n * 65536) hertz_static = hertz_cap;
     ctx.soft = make_soft(hertz, w->def.contact_damping_ratio, ctx.n);
-    ctx.soft_static = make_soft(pg_fix_add(hertz, hertz), w->def.contact_damping_ratio, ctx.n);
+    ctx.soft_static = make_soft(hertz_static, w->def.contact_damping_ratio, ctx.n);
     ctx.push_max = w->def.contact_push_max;
     ctx.push_floor = ctx.push_max / 32;
     ctx.soft.floor_depth = floor_depth(&ctx.soft, ctx.push_floor);

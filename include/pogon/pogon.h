@@ -115,7 +115,8 @@ typedef struct pg_world_def {
     uint32_t step_hz;           /* steps per simulated second, default 60 (1..1000) */
     uint32_t substeps;          /* solver substeps per step, default 4 (1..16) */
     uint32_t effects;           /* PG_EFFECT_* bits, default PG_EFFECTS_ALL */
-    pg_fix contact_hertz;       /* contact stiffness, default 30 Hz (capped at a quarter of the substep rate) */
+    pg_fix contact_hertz;       /* contact stiffness, default 30 Hz; twice it against a side that cannot move
+                                   and between masses 4:1 or more; both capped at a quarter of the substep rate */
     pg_fix contact_damping_ratio; /* default 10 */
     pg_fix contact_push_max;    /* fastest push-out of overlap, default 3 m/s; of it, only
                                    what holds a contact's load (plus 1/32 of this) becomes

@@ -807,10 +807,12 @@ void ref_step(ref_world *w)
     /* 2. contacts */
     update_contacts(w);
     /* 3. solve */
+    /* the softness cap of src/solver.c: neither softness stiffer than a quarter of the
+     * substep rate */
     if (hertz * 4 > n_per_s) hertz = n_per_s / 4;
     ctx.n = n_per_s;
     ctx.soft = make_soft(hertz, d->damping_ratio, h);
-    ctx.soft_static = make_soft(2 * hertz, d->damping_ratio, h);
+    ctx.soft_static = make_soft(2 * hertz * 4 > n_per_s ? n_per_s / 4 : 2 * hertz, d->damping_ratio, h);
     ctx.push_max = d->push_max;
     ctx.push_floor = d->push_max / 32;
     ctx.friction = d->friction;
