@@ -370,10 +370,11 @@ static void test_mass_ratio_100_within_the_softness_cap(void **state)
     (void)state;
     for (k = 0; k < (int)(sizeof settings / sizeof settings[0]); ++k) {
         pg_world_def d = def_with(PG_EFFECTS_ALL & ~PG_EFFECT_SLEEPING, 64, 128, 512);
-        double n = 60.0 * settings[k].substeps, hz, omega, want;
+        double n, hz, omega, want;
         pair_run r;
         char what[160];
         d.substeps = settings[k].substeps;
+        n = (double)d.step_hz * d.substeps; /* substeps a second */
         d.contact_hertz = fx(settings[k].hertz);
         hz = settings[k].hertz < n / 4 ? settings[k].hertz : n / 4; /* the contact's cap */
         hz = 2 * hz < n / 4 ? 2 * hz : n / 4;                      /* the stiffer one's */
