@@ -1350,12 +1350,13 @@ void pg__solve(pg_world *w)
     ctx.h_q32 = (int64_t)(((UINT64_C(1) << 32) + ctx.n / 2u) / ctx.n);
     ctx.angle_per_w = (INT64_C(174992710548) + (int64_t)ctx.n / 2) / (int64_t)ctx.n; /* 2^40 / (2 pi) / n */
     /* SOFTNESS CAP: no softness is stiffer than a quarter of the substep rate, omega h =
-     * pi / 2 (Box2D v3's cap on its contact hertz). The stiffer softness of a side that
-     * cannot move or a 4:1 pair, twice the contact's, is capped too: at the defaults (30
-     * Hz, 240 substeps a second) it is exactly at the cap, but at 2 substeps (60 Hz at 120
-     * a second, omega h = pi), at 1, or at 60 Hz it was past it, where the soft step is
-     * not stable: a heavy box on a light one shook at 0.5-1.5 m/s and at 2 substeps fell
-     * through it (test_mass_ratio_100_within_the_softness_cap). */
+     * pi / 2 (Box2D v3's first cap on its contact hertz; its later versions cap that at
+     * an eighth, so that the doubled static softness stays within a quarter). The
+     * stiffer softness of a side that cannot move or a 4:1 pair, twice the contact's, is
+     * capped too: at the defaults (30 Hz, 240 substeps a second) it is exactly at the
+     * cap, but at 2 substeps (60 Hz at 120 a second, omega h = pi), at 1, or at 60 Hz it
+     * was past it, where the soft step is not stable: a heavy box on a light one shook at
+     * 0.5-4 m/s or fell through it (test_mass_ratio_within_the_softness_cap). */
     hertz_cap = (pg_fix)((int64_t)ctx.n * 65536 / 4);
     hertz = w->def.contact_hertz;
     if ((int64_t)hertz * 4 > (int64_t)ctx.n * 65536) hertz = hertz_cap;

@@ -350,26 +350,33 @@ static void expect_pair_stays(double bottom_density, double top_density)
 static void test_mass_ratio_100_heavy_on_light(void **state) { (void)state; expect_pair_stays(1.0, 100.0); }
 static void test_mass_ratio_100_light_on_heavy(void **state) { (void)state; expect_pair_stays(100.0, 1.0); }
 
-/* 1:100 heavy on light at settings other than the defaults: 1 and 2 substeps (2 is the
- * fast preset's) at 30 Hz, and 4 substeps at 60 Hz, with the defaults as the control.
- * The pair (4:1 and beyond) and the light box's ground contact get the stiffer softness,
- * twice the contact's hertz but never past a quarter of the substep rate (SOFTNESS CAP in
- * src/solver.c), where the soft step stops being stable. So at rest, with g (1 + 100)
- * the load per unit of the light box's mass, the boxes overlap by g 101 / omega^2 (see
- * test_mass_ratio_1000_no_pass_through), omega = 2 pi min(2 hz, n / 4), n the substeps
- * a second: 0.1115 m (1 substep: 15 Hz), 0.0279 m (2: 30 Hz), 0.0070 m (4 at 60 Hz and
- * the defaults: 60 Hz). Asserted, over the last second of 10 s with sleeping off: every
- * speed below 0.05 m/s, the sleep tolerance (at rest), and the overlap within 5 % of the
- * model. Before the cap covered the stiffer softness (60 Hz at 2 substeps is
- * omega h = pi) the heavy box shook at 1.5 m/s (1 substep) and 0.5 m/s (60 Hz) and at
- * 2 substeps fell through the light box. */
-static void test_mass_ratio_100_within_the_softness_cap(void **state)
+/* Heavy on light, 1:100 and 1:1000, at settings other than the defaults: 1 and 2
+ * substeps (2 is the fast preset's) at 30 Hz and 4 substeps at 60 Hz, with the defaults
+ * as the control. The pair (4:1 and beyond) and the light box's ground contact get the
+ * stiffer softness, twice the contact's hertz but never past a quarter of the substep
+ * rate (SOFTNESS CAP in src/solver.c), where the soft step stops being stable. So at
+ * rest, with g (1 + R) the load per unit of the light box's mass (R the ratio), the boxes
+ * overlap by g (1 + R) / omega^2 (see test_mass_ratio_1000_no_pass_through), omega =
+ * 2 pi min(2 hz, n / 4), n the substeps a second. 1:100: 0.1137 m (1 substep: 15 Hz),
+ * 0.0284 m (2: 30 Hz), 0.0071 m (4 at 60 Hz and the defaults: 60 Hz); 1:1000: 0.2817 m
+ * (2 substeps) and 0.0704 m (at 60 Hz). 1:1000 at 1 substep is left out: there the model
+ * says 1.13 m, more than the box, and the heavy box does pass through (docs/accuracy.md:
+ * no stacks at 1 substep). Asserted, over the last second of 10 s with sleeping off:
+ * every speed below 0.05 m/s, the sleep tolerance (at rest), and the overlap within 5 %
+ * of the model. Before the cap covered the stiffer softness (60 Hz at 2 substeps is
+ * omega h = pi), 1:100 shook at 1.5 m/s (1 substep) and 0.5 m/s (60 Hz) and at 2
+ * substeps the heavy box fell through the light one; 1:1000 shook at 4.0 m/s (2
+ * substeps) and at 60 Hz fell through. */
+static void test_mass_ratio_within_the_softness_cap(void **state)
 {
-    static const struct { uint32_t substeps; double hertz; } settings[] = { { 1, 30 }, { 2, 30 }, { 4, 60 }, { 4, 30 } };
+    static const struct { uint32_t substeps; double hertz, ratio; } settings[] = {
+        { 1, 30, 100 }, { 2, 30, 100 }, { 4, 60, 100 }, { 4, 30, 100 }, { 2, 30, 1000 }, { 4, 60, 1000 }, { 4, 30, 1000 },
+    };
     int k, ok = 1;
     (void)state;
     for (k = 0; k < (int)(sizeof settings / sizeof settings[0]); ++k) {
         pg_world_def d = def_with(PG_EFFECTS_ALL & ~PG_EFFECT_SLEEPING, 64, 128, 512);
+        const double ratio = settings[k].ratio, light = 100.0 / ratio; /* densities: 100 on `light` */
         double n, hz, omega, want;
         pair_run r;
         char what[160];
@@ -379,16 +386,16 @@ static void test_mass_ratio_100_within_the_softness_cap(void **state)
         hz = settings[k].hertz < n / 4 ? settings[k].hertz : n / 4; /* the contact's cap */
         hz = 2 * hz < n / 4 ? 2 * hz : n / 4;                      /* the stiffer one's */
         omega = 2.0 * PGT_PI * hz;
-        want = fd(d.gravity.y) * -101.0 / (omega * omega);
-        r = run_pair_in(&d, 1.0, 100.0, 600);
-        print_message("mass ratio 1:100, heavy on light, %u substeps at %g Hz: last second's speeds below %.5f m/s, overlap "
-                      "%.5f m (model %.5f m); bottom y %.5f, top y %.5f\n", settings[k].substeps, settings[k].hertz,
+        want = -fd(d.gravity.y) * (1.0 + ratio) / (omega * omega);
+        r = run_pair_in(&d, light, 100.0, 600);
+        print_message("mass ratio 1:%g, heavy on light, %u substeps at %g Hz: last second's speeds below %.5f m/s, overlap "
+                      "%.5f m (model %.5f m); bottom y %.5f, top y %.5f\n", ratio, settings[k].substeps, settings[k].hertz,
                       r.max_speed_after_last_s, 1.0 - r.settled_min_gap, want, r.bottom_y, r.top_y);
-        snprintf(what, sizeof what, "1:100, %u substeps at %g Hz: largest speed in the last second (m/s)", settings[k].substeps,
-                 settings[k].hertz);
+        snprintf(what, sizeof what, "1:%g, %u substeps at %g Hz: largest speed in the last second (m/s)", ratio,
+                 settings[k].substeps, settings[k].hertz);
         ok &= within(r.max_speed_after_last_s, 0.05, what);
-        snprintf(what, sizeof what, "1:100, %u substeps at %g Hz: |overlap at rest - the model's %.5f m| (m)", settings[k].substeps,
-                 settings[k].hertz, want);
+        snprintf(what, sizeof what, "1:%g, %u substeps at %g Hz: |overlap at rest - the model's %.5f m| (m)", ratio,
+                 settings[k].substeps, settings[k].hertz, want);
         ok &= within(fabs(1.0 - r.settled_min_gap - want), 0.05 * want, what);
     }
     if (!ok) fail();
@@ -1935,7 +1942,7 @@ int main(void)
         cmocka_unit_test(test_pyramid_no_box_rotates),
         cmocka_unit_test(test_mass_ratio_100_heavy_on_light),
         cmocka_unit_test(test_mass_ratio_100_light_on_heavy),
-        cmocka_unit_test(test_mass_ratio_100_within_the_softness_cap),
+        cmocka_unit_test(test_mass_ratio_within_the_softness_cap),
         cmocka_unit_test(test_mass_ratio_1000_no_explosion),
         cmocka_unit_test(test_mass_ratio_1000_no_pass_through),
         cmocka_unit_test(test_pinched_body_is_not_pressed_through),
