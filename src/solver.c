@@ -1357,11 +1357,10 @@ void pg__solve(pg_world *w)
      * cap, but at 2 substeps (60 Hz at 120 a second, omega h = pi), at 1, or at 60 Hz it
      * was past it, where the soft step is not stable: a heavy box on a light one shook at
      * 0.5-4 m/s or fell through it (test_mass_ratio_within_the_softness_cap). */
-    hertz_cap = (pg_fix)((int64_t)ctx.n * 65536 / 4);
-    hertz = w->def.contact_hertz;
-    if ((int64_t)hertz * 4 > (int64_t)ctx.n * 65536) hertz = hertz_cap;
+    hertz_cap = (pg_fix)((int64_t)ctx.n * 16384); /* n / 4 in Q16.16, exact; n <= 16000 */
+    hertz = w->def.contact_hertz < hertz_cap ? w->def.contact_hertz : hertz_cap;
     hertz_static = pg_fix_add(hertz, hertz);
-    if ((int64_t)hertz_static * 4 > (int64_t)ctx.n * 65536) hertz_static = hertz_cap;
+    if (hertz_static > hertz_cap) hertz_static = hertz_cap;
     ctx.soft = make_soft(hertz, w->def.contact_damping_ratio, ctx.n);
     ctx.soft_static = make_soft(hertz_static, w->def.contact_damping_ratio, ctx.n);
     ctx.push_max = w->def.contact_push_max;
