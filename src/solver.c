@@ -933,12 +933,11 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
      * resting depth; in Q16.16 it may never get there (the last of the sinking moves a
      * body less than half a position step per substep), and friction came out 1.3% weak. */
     if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
-        if (c->central_friction) {
-            solve_friction(&va, &vb, &c->p[0], t, friction_bound(&c->p[0]) + friction_bound(&c->p[1]));
-        } else {
-            solve_friction(&va, &vb, first, t, friction_bound(first));
-            if (second != NULL) solve_friction(&va, &vb, second, t, friction_bound(second));
-        }
+        /* one row: a single point's, or a face contact's central row (CENTRAL FRICTION:
+         * with friction on, every two-point manifold has one), bounded by both points */
+        int64_t bound = friction_bound(&c->p[0]);
+        if (c->central_friction) bound += friction_bound(&c->p[1]);
+        solve_friction(&va, &vb, &c->p[0], t, bound);
     }
     store_velocity(A, &va);
     store_velocity(B, &vb);
