@@ -762,14 +762,14 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         normal_apply(ctx, A, B, p, normal_update(soft, p, b, is_soft), rel);
     }
     if (ctx->friction) {
-        for (k = 0; k < (c->central ? 1 : c->count); ++k) {
-            spoint *p = c->central ? &c->p[0] : &c->p[order ? c->count - 1 - k : k];
-            double max_f = c->central ? c->p[0].friction_ratio * c->p[0].ln + c->p[1].friction_ratio * c->p[1].ln : p->friction_ratio * p->ln;
-            double vt = rel_speed(A, B, t, p->ctA, p->ctB), acc = p->lt - vt;
-            acc = acc < -max_f ? -max_f : acc > max_f ? max_f : acc;
-            apply(A, B, acc - p->lt, p->ltA, p->ltB, p->gtA, p->gtB);
-            p->lt = acc;
-        }
+        /* one row, as in pogon: a single point's, or a face contact's central row (with
+         * friction on every two-point manifold has one), bounded by both points */
+        spoint *p = &c->p[0];
+        double max_f = p->friction_ratio * p->ln + (c->central ? c->p[1].friction_ratio * c->p[1].ln : 0);
+        double vt = rel_speed(A, B, t, p->ctA, p->ctB), acc = p->lt - vt;
+        acc = acc < -max_f ? -max_f : acc > max_f ? max_f : acc;
+        apply(A, B, acc - p->lt, p->ltA, p->ltB, p->gtA, p->gtB);
+        p->lt = acc;
     }
 }
 
