@@ -194,8 +194,9 @@ static void pg__collide_circles(const pg_geom *a, const pg_geom *b, pg_fix specu
     pg_vec2 ca = a->vertices[0], cb = b->vertices[0];
     int64_t d2 = pg__dist2(ca, cb), dist = (int64_t)pg__sqrt_nearest((uint64_t)d2);
     int64_t sep = dist - a->radius - b->radius;
-    pg_dir n = d2 == 0 ? pg__dir(0, (int32_t)PG__Q30) : pg_dir_normalize((int64_t)cb.x - ca.x, (int64_t)cb.y - ca.y);
-    if (sep > speculative) return;
+    pg_dir n;
+    if (sep > speculative) return; /* before the normal: a pair left out needs no unit vector */
+    n = d2 == 0 ? pg__dir(0, (int32_t)PG__Q30) : pg_dir_normalize((int64_t)cb.x - ca.x, (int64_t)cb.y - ca.y);
     out->normal = n;
     pg__push(out, pg__mid_half(ca, cb, n, (int64_t)a->radius - b->radius), sep, PG__ID(PG__KIND_POINTS, 0, 0));
 }
