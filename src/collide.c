@@ -406,14 +406,19 @@ static void pg__clip_edge(const pg_geom *ref, int32_t i11, const pg_geom *inc, i
     int32_t i12 = pg__next(i11, ref->count), i22 = pg__next(i21, inc->count);
     pg_dir n = ref->normals[i11], t = pg__tangent(n);
     pg_vec2 v11 = ref->vertices[i11], v12 = ref->vertices[i12], v21 = inc->vertices[i21], v22 = inc->vertices[i22];
-    int64_t off2 = pg__face_off2(ref, i11);
-    int64_t s21 = pg__q16_of2(pg__sep2(v21, n, off2)), s22 = pg__q16_of2(pg__sep2(v22, n, off2));
+    /* The four vertices' projections on n and on t (Q46, < 2^60): every quantity below is
+     * a sum of them, the same integer as the product of the corresponding difference. */
+    int64_t n11 = pg__vdot46(v11, n), n12 = pg__vdot46(v12, n), n21 = pg__vdot46(v21, n), n22 = pg__vdot46(v22, n);
+    int64_t t11 = pg__vdot46(v11, t), t12 = pg__vdot46(v12, t), t21 = pg__vdot46(v21, t), t22 = pg__vdot46(v22, t);
+    int64_t off2 = n11 + n12; /* pg__face_off2 */
+    int64_t s21 = pg__q16_of2(2 * n21 - off2), s22 = pg__q16_of2(2 * n22 - off2);
     /* The incident edge runs against the tangent: "lower" side plane through v11,
-     * "upper" through v12; dl = rounded offset past the lower plane, du before the upper. */
-    int64_t dl21 = pg__round_shift64(pg__dot46((int64_t)v21.x - v11.x, (int64_t)v21.y - v11.y, t), 30);
-    int64_t dl22 = pg__round_shift64(pg__dot46((int64_t)v22.x - v11.x, (int64_t)v22.y - v11.y, t), 30);
-    int64_t du21 = pg__round_shift64(pg__dot46((int64_t)v12.x - v21.x, (int64_t)v12.y - v21.y, t), 30);
-    int64_t du22 = pg__round_shift64(pg__dot46((int64_t)v12.x - v22.x, (int64_t)v12.y - v22.y, t), 30);
+     * "upper" through v12; dl = rounded offset past the lower plane, du before the upper
+     * ((v21 - v11) . t = t21 - t11, ...: differences < 2^61). */
+    int64_t dl21 = pg__round_shift64(t21 - t11, 30);
+    int64_t dl22 = pg__round_shift64(t22 - t11, 30);
+    int64_t du21 = pg__round_shift64(t12 - t21, 30);
+    int64_t du22 = pg__round_shift64(t12 - t22, 30);
 
     c->dip[0] = c->dip[1] = INT64_MIN;
     c->miss = (dl21 < 0 && dl22 < 0) || (du21 < 0 && du22 < 0);
@@ -435,7 +440,7 @@ static void pg__clip_edge(const pg_geom *ref, int32_t i11, const pg_geom *inc, i
     } else {
         int64_t h = pg__div_round(s22 * dl21 - s21 * dl22, dl21 - dl22);
         /* v11 + (h + e) n, e = off2/2 - v11.n: the point lies on the side plane. */
-        int64_t e2 = off2 - 2 * pg__vdot46(v11, n); /* 2e, Q46 */
+        int64_t e2 = n12 - n11; /* 2e = off2 - 2 v11.n, Q46 */
         c->p[0] = pg__add_half(v11, n, pg__round_shift64(e2, 30) + h + rdiff);
         c->sep[0] = h;
         c->dip[0] = h - s22;
@@ -447,7 +452,7 @@ static void pg__clip_edge(const pg_geom *ref, int32_t i11, const pg_geom *inc, i
         c->sep[1] = s21;
     } else {
         int64_t h = pg__div_round(s21 * du22 - s22 * du21, du22 - du21);
-        int64_t e2 = off2 - 2 * pg__vdot46(v12, n);
+        int64_t e2 = n11 - n12; /* off2 - 2 v12.n */
         c->p[1] = pg__add_half(v12, n, pg__round_shift64(e2, 30) + h + rdiff);
         c->sep[1] = h;
         c->dip[1] = h - s21;
