@@ -297,7 +297,7 @@ static int64_t pg__max_separation(const pg_geom *a, const pg_geom *b, int32_t *e
 }
 
 /* A box: four vertices whose opposite faces have opposite normals (exactly: rounding is
- * symmetric, so every placed rectangle qualifies). */
+ * symmetric, so every placed rectangle or parallelogram qualifies). */
 static int pg__is_box(const pg_geom *g)
 {
     return g->count == 4 && g->normals[2].x == -g->normals[0].x && g->normals[2].y == -g->normals[0].y &&
@@ -305,10 +305,11 @@ static int pg__is_box(const pg_geom *g)
 }
 
 /* pg__max_separation of the box g against the box o, written out: the same values and
- * ties. Per pair of opposite faces one pass over o's vertices gives the deepest along n
- * and along -n; face i's doubled offset (v_i + v_i+1) . n_i is taken as one product of
- * the summed vertices (|v_i + v_i+1| components < 2^30: < 2^61, the same integer), face
- * i + 2's as the negation of (v_i+2 + v_i+3) . n_i. */
+ * ties. One pass over o's vertices gives, per pair of opposite faces, the deepest along n
+ * and along -n (Q46 products < 2^60, as pg__vdot46); face i's doubled offset
+ * (v_i + v_i+1) . n_i is one product of the summed vertices (components < 2^30: < 2^61,
+ * the same integer as the two products), face i + 2's the negation of (v_i+2 + v_i+3) . n_i
+ * (n_i+2 = -n_i). The separations stay below 2^62, as pg__sep2's. */
 static int64_t pg__box_separation(const pg_geom *g, const pg_geom *o, int32_t *edge)
 {
     const pg_vec2 *v = g->vertices, *w = o->vertices;
