@@ -21,7 +21,8 @@ typedef struct pg_pair { uint32_t a, b; } pg_pair; /* proxy indices, a < b */
 #define PG_PROXY_ACTIVE 1u
 
 /* Bytes of scratch memory pg_broadphase_pairs needs for up to `max_proxies` proxies
- * and a pair capacity of `max_pairs` (SIZE_MAX if that does not fit in a size_t):
+ * and a pair capacity of `max_pairs` (SIZE_MAX if that does not fit in a size_t, or if
+ * max_proxies > 2^29, more than the broadphase takes):
  *     8 * (33 * max_proxies + ceil(max_proxies / 64) + 4 * max_pairs)
  * i.e. 264 bytes per proxy (16 cell entries per proxy, sorted with a buffer of the same
  * size; one index list) and 32 bytes per pair of capacity (pairs are collected and
@@ -32,7 +33,8 @@ size_t pg_broadphase_scratch_bytes(uint32_t max_proxies, uint32_t max_pairs);
  * ascending (a, b) order, written to pairs[0 .. *pair_count). Returns 0 on success,
  * -1 when more than `pair_capacity` pairs exist (pairs then holds the first
  * pair_capacity in order and *pair_count the capacity), -2 when scratch_bytes is less
- * than pg_broadphase_scratch_bytes(count, pair_capacity) (nothing done, *pair_count 0).
+ * than pg_broadphase_scratch_bytes(count, pair_capacity) or count > 2^29 (nothing done,
+ * *pair_count 0; a world has at most 2^24 shapes).
  * `scratch` must be aligned for uint64_t; its contents on entry do not matter and on
  * return are unspecified. When no proxy is ACTIVE the call returns 0 pairs after one
  * pass over `flags`. Boxes must have lo <= hi (otherwise the pairs are unspecified,
@@ -53,9 +55,10 @@ size_t pg_broadphase_scratch_bytes(uint32_t max_proxies, uint32_t max_pairs);
  *   ones in index order; a passive proxy is binned only into cells that hold an active
  *   entry. Large active proxies are tested against every other proxy, large passive
  *   ones against every binned active proxy. Binned proxies are paired within cells
- *   (stable LSD radix sort of (cell, proxy) entries), each pair from the first cell
- *   both boxes share. More than 16 entries per proxy on average (a sign of very
- *   mixed sizes) degrades speed, never correctness. */
+ *   ((cell, proxy) entries sorted stably by cell: a counting sort when the rectangle
+ *   has few cells, else an LSD radix sort), each pair from the first cell both boxes
+ *   share. More than 16 entries per proxy on average (a sign of very mixed sizes)
+ *   degrades speed, never correctness. */
 int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t count,
                         pg_pair *pairs, uint32_t pair_capacity, uint32_t *pair_count,
                         void *scratch, size_t scratch_bytes);
