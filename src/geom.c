@@ -64,20 +64,77 @@ pg_dir pg_dir_normalize(int64_t x, int64_t y)
 
 /* ---- placing geometry ------------------------------------------------------------------ */
 
+/* R (x, y) in int64, each coordinate rounded once and not yet saturated: the Q16.16
+ * coordinates of a vertex or the Q2.30 ones of a normal, in the same format. */
+static int64_t pg__rot_x(pg_rot r, int32_t x, int32_t y) { return pg__round_shift64((int64_t)r.c * x - (int64_t)r.s * y, 30); }
+static int64_t pg__rot_y(pg_rot r, int32_t x, int32_t y) { return pg__round_shift64((int64_t)r.s * x + (int64_t)r.c * y, 30); }
+
+/* Whether the second half of the vertices and of the normals is the first half negated
+ * (a box, a centred capsule or segment, any centrally symmetric polygon about the body's
+ * point). Compared in int64: INT32_MIN has no int32 negation. */
+static int pg__centrally_symmetric(const pg_geom *g, int32_t half)
+{
+    int32_t i;
+    for (i = 0; i < half; ++i) {
+        if ((int64_t)g->vertices[i + half].x != -(int64_t)g->vertices[i].x ||
+            (int64_t)g->vertices[i + half].y != -(int64_t)g->vertices[i].y ||
+            (int64_t)g->normals[i + half].x != -(int64_t)g->normals[i].x ||
+            (int64_t)g->normals[i + half].y != -(int64_t)g->normals[i].y)
+            return 0;
+    }
+    return 1;
+}
+
 /* The placed vertices, normals, centroid and radius; the tail beyond `count` is left to
- * the callers below. */
+ * the callers below. Every value is pg_v2_add(position, pg_rot_apply(rotation, v)) for a
+ * vertex and the Q30 rotation rounded once for a normal, computed with less work where
+ * the result is known to be the same bits:
+ *   - R (-v) rounds to exactly -(R v) (the products are exact and pg__round_shift64
+ *     rounds ties away from zero, symmetric in sign), so a centrally symmetric polygon
+ *     rotates only its first half and negates the unsaturated value for the second;
+ *   - R 0 is 0, so a vertex or centroid at the body's point lands on `position`
+ *     saturated (to PG_FIX_MIN when it is INT32_MIN), and a zero normal stays zero. */
 static void place(const pg_geom *local, pg_vec2 position, pg_rot rotation, pg_geom *world)
 {
-    int32_t i, count = local->count;
+    int32_t i, count = local->count, half = count / 2;
+    pg_vec2 at = pg_v2(pg__sat64(position.x), pg__sat64(position.y));
     /* pg_rot_from_angle returns unit rotations (to 1.25 Q30 units), so placed shapes
      * keep their size and their normals stay unit without normalising here. */
-    for (i = 0; i < count; ++i) {
-        pg_dir n = local->normals[i];
-        world->vertices[i] = pg_v2_add(position, pg_rot_apply(rotation, local->vertices[i]));
-        world->normals[i].x = (int32_t)pg__round_shift64((int64_t)rotation.c * n.x - (int64_t)rotation.s * n.y, 30);
-        world->normals[i].y = (int32_t)pg__round_shift64((int64_t)rotation.s * n.x + (int64_t)rotation.c * n.y, 30);
+    if (count >= 2 && (count & 1) == 0 && pg__centrally_symmetric(local, half)) {
+        for (i = 0; i < half; ++i) {
+            pg_vec2 v = local->vertices[i];
+            pg_dir n = local->normals[i];
+            int64_t vx = pg__rot_x(rotation, v.x, v.y), vy = pg__rot_y(rotation, v.x, v.y);
+            int64_t nx = pg__rot_x(rotation, n.x, n.y), ny = pg__rot_y(rotation, n.x, n.y);
+            world->vertices[i].x = pg__sat64((int64_t)position.x + pg__sat64(vx));
+            world->vertices[i].y = pg__sat64((int64_t)position.y + pg__sat64(vy));
+            world->vertices[i + half].x = pg__sat64((int64_t)position.x + pg__sat64(-vx));
+            world->vertices[i + half].y = pg__sat64((int64_t)position.y + pg__sat64(-vy));
+            world->normals[i].x = (int32_t)nx;
+            world->normals[i].y = (int32_t)ny;
+            world->normals[i + half].x = (int32_t)-nx;
+            world->normals[i + half].y = (int32_t)-ny;
+        }
+    } else {
+        for (i = 0; i < count; ++i) {
+            pg_vec2 v = local->vertices[i];
+            pg_dir n = local->normals[i];
+            if (v.x == 0 && v.y == 0) {
+                world->vertices[i] = at;
+            } else {
+                world->vertices[i].x = pg__sat64((int64_t)position.x + pg__sat64(pg__rot_x(rotation, v.x, v.y)));
+                world->vertices[i].y = pg__sat64((int64_t)position.y + pg__sat64(pg__rot_y(rotation, v.x, v.y)));
+            }
+            if (n.x == 0 && n.y == 0) {
+                world->normals[i] = n;
+            } else {
+                world->normals[i].x = (int32_t)pg__rot_x(rotation, n.x, n.y);
+                world->normals[i].y = (int32_t)pg__rot_y(rotation, n.x, n.y);
+            }
+        }
     }
-    world->centroid = pg_v2_add(position, pg_rot_apply(rotation, local->centroid));
+    if (local->centroid.x == 0 && local->centroid.y == 0) world->centroid = at;
+    else world->centroid = pg_v2_add(position, pg_rot_apply(rotation, local->centroid));
     world->radius = local->radius;
 }
 
