@@ -83,7 +83,7 @@ static int body_was_active(const pg_world *w, uint32_t shape) { return (w->proxy
 
 pg_result pg__update_contacts(pg_world *w)
 {
-    uint32_t n_proxies = 0, n_pairs = 0, s, i = 0, j = 0, out = 0;
+    uint32_t n_proxies = 0, n_pairs = 0, s, i = 0, j, out = 0, n_old = w->contact_count;
     pg_contact *old = w->contacts, *next = w->contacts_next;
     int overflow;
 
@@ -103,57 +103,54 @@ pg_result pg__update_contacts(pg_world *w)
     if (overflow != 0) w->stats.capacity_misses += 1u;
     w->stats.pair_count = n_pairs;
 
-    /* Merge the old contact list with the new pairs, both sorted by shape pair. */
-    for (;;) {
+    /* Merge the old contact list with the new pairs, both sorted by shape pair: each pair
+     * that can collide, after the old contacts that sort before it. */
+    for (j = 0; j <= n_pairs; ++j) {
         uint32_t pa = 0, pb = 0;
-        int have_pair = 0, have_old = i < w->contact_count;
-        while (j < n_pairs) { /* next pair that can collide */
+        const pg_contact *prev = NULL;
+        pg_contact *c;
+        if (j < n_pairs) {
             pa = w->proxy_shape[w->pairs[j].a];
             pb = w->proxy_shape[w->pairs[j].b];
-            if (shapes_should_collide(w, pa, pb)) { have_pair = 1; break; }
-            ++j;
+            if (!shapes_should_collide(w, pa, pb)) continue;
         }
-        if (!have_pair && !have_old) break;
-        if (have_old && (!have_pair || key_less(old[i].shape_a, old[i].shape_b, pa, pb))) {
+        for (; i < n_old && (j == n_pairs || key_less(old[i].shape_a, old[i].shape_b, pa, pb)); ++i) {
             /* not found this step: keep it if both sides were passive, else it ended */
-            const pg_contact *c = &old[i];
+            const pg_contact *o = &old[i];
             int kept = 0;
-            if (w->shapes[c->shape_a].used && w->shapes[c->shape_b].used && !body_was_active(w, c->shape_a) &&
-                !body_was_active(w, c->shape_b) && shapes_should_collide(w, c->shape_a, c->shape_b)) {
+            if (w->shapes[o->shape_a].used && w->shapes[o->shape_b].used && !body_was_active(w, o->shape_a) &&
+                !body_was_active(w, o->shape_b) && shapes_should_collide(w, o->shape_a, o->shape_b)) {
                 if (out < w->def.max_contacts) {
-                    next[out++] = *c;
+                    next[out++] = *o;
                     kept = 1;
                 } else {
                     w->stats.capacity_misses += 1u;
                 }
             }
-            if (!kept) pg__push_end_event(w, c);
-            ++i;
+            if (!kept) pg__push_end_event(w, o);
+        }
+        if (j == n_pairs) break;
+        if (i < n_old && old[i].shape_a == pa && old[i].shape_b == pb) prev = &old[i++];
+        if (out >= w->def.max_contacts) {
+            w->stats.capacity_misses += 1u;
+            if (prev != NULL) pg__push_end_event(w, prev);
             continue;
         }
-        {
-            const pg_contact *prev = NULL;
-            pg_contact *c;
-            if (have_old && old[i].shape_a == pa && old[i].shape_b == pb) prev = &old[i++];
-            ++j;
-            if (out >= w->def.max_contacts) {
-                w->stats.capacity_misses += 1u;
-                if (prev != NULL) pg__push_end_event(w, prev);
-                continue;
-            }
-            c = &next[out];
-            collide_pair(w, pa, pb, prev, c);
-            if (c->point_count == 0) { /* boxes overlap, shapes do not touch: no contact */
-                if (prev != NULL) pg__push_end_event(w, prev);
-                continue;
-            }
-            ++out;
-            if (prev == NULL) pg__push_begin_event(w, c);
-            {   /* a moving body touching a sleeping one wakes its island */
-                pg_body *ba = &w->bodies[c->body_a], *bb = &w->bodies[c->body_b];
-                if (pg__body_is_active(ba) && bb->type != PG_BODY_STATIC && !pg__body_is_active(bb)) pg__wake_body(w, c->body_b);
-                if (pg__body_is_active(bb) && ba->type != PG_BODY_STATIC && !pg__body_is_active(ba)) pg__wake_body(w, c->body_a);
-            }
+        c = &next[out];
+        collide_pair(w, pa, pb, prev, c);
+        if (c->point_count == 0) { /* boxes overlap, shapes do not touch: no contact */
+            if (prev != NULL) pg__push_end_event(w, prev);
+            continue;
+        }
+        ++out;
+        if (prev == NULL) pg__push_begin_event(w, c);
+        /* A moving body touching a sleeping one wakes its island. Waking only ever adds
+         * active bodies during the merge, so two shapes whose bodies were both active at
+         * its start still are, and neither can wake the other. */
+        if ((w->proxy_flags[pa] & w->proxy_flags[pb] & PG_PROXY_ACTIVE) == 0) {
+            pg_body *ba = &w->bodies[c->body_a], *bb = &w->bodies[c->body_b];
+            if (pg__body_is_active(ba) && bb->type != PG_BODY_STATIC && !pg__body_is_active(bb)) pg__wake_body(w, c->body_b);
+            if (pg__body_is_active(bb) && ba->type != PG_BODY_STATIC && !pg__body_is_active(ba)) pg__wake_body(w, c->body_a);
         }
     }
     w->contacts = next;
