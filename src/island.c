@@ -33,6 +33,17 @@ static int rested_long_enough(const pg_world *w, pg_fix rested, pg_fix dt)
     return steps >= needed;
 }
 
+/* The same test as one comparison, rested >= rest_threshold(w, dt), for the loops over
+ * bodies (two divisions per body before). With x = rested + dt / 2 and dt > 0, C's
+ * truncating x / dt is at least needed >= 1 exactly when x >= needed dt, and at least
+ * needed <= 0 exactly when x > (needed - 1) dt. |needed| < 2^26 (time_to_sleep < 2^31,
+ * step_hz <= 1000) and dt <= 2^16: the products fit. */
+static int64_t rest_threshold(const pg_world *w, pg_fix dt)
+{
+    int64_t needed = ((int64_t)w->def.time_to_sleep * w->def.step_hz + 32768) / 65536;
+    return (needed > 0 ? needed * dt : (needed - 1) * dt + 1) - dt / 2;
+}
+
 /* An upper bound on how far any point of body b lies from its centre of mass (Q16.16 m):
  * the farthest vertex of its shapes plus that shape's radius, the square root rounded up. */
 static int64_t body_extent(const pg_world *w, const pg_body *b)
@@ -71,9 +82,9 @@ static int body_at_rest(const pg_world *w, const pg_body *b, int64_t lin_tol2, p
 
 void pg__update_sleep(pg_world *w)
 {
-    uint32_t *parent = w->island_parent, i;
+    uint32_t *parent = w->island_parent, i, n_contacts = w->contact_count;
     pg_fix dt = (pg_fix)((65536 + (int32_t)w->def.step_hz / 2) / (int32_t)w->def.step_hz);
-    int64_t lin_tol2 = (int64_t)w->def.sleep_linear_tolerance * w->def.sleep_linear_tolerance;
+    int64_t lin_tol2 = (int64_t)w->def.sleep_linear_tolerance * w->def.sleep_linear_tolerance, rest;
     pg_fix ang_tol = w->def.sleep_angular_tolerance;
     pg_fix *min_time = (pg_fix *)(void *)w->solver_scratch; /* solver scratch is free after the solve */
     pg_fix longest = 0; /* the longest rest of an awake body */
@@ -92,38 +103,41 @@ void pg__update_sleep(pg_world *w)
     /* An island sleeps when its shortest rest is long enough; when even the longest is not,
      * none can, and the islands need not be found (rain: most of the pile is moving). */
     if (!rested_long_enough(w, longest, dt)) return;
-    for (i = 0; i < w->contact_count; ++i) {
+    for (i = 0; i < n_contacts; ++i) {
         const pg_contact *c = &w->contacts[i];
         const pg_body *a = &w->bodies[c->body_a], *b = &w->bodies[c->body_b];
         if (c->point_count == 0) continue;
         if (a->type == PG_BODY_DYNAMIC && b->type == PG_BODY_DYNAMIC && pg__body_is_active(a) && pg__body_is_active(b))
             unite(parent, c->body_a, c->body_b);
     }
-    for (i = 0; i < w->body_high; ++i) min_time[i] = PG_FIX_MAX;
+    /* Each active body's root, kept in parent[i] so the loops below read it directly. The
+     * root is the lowest index of its island (at most i) and is itself active, so its
+     * min_time was initialised earlier in this same loop. */
     for (i = 0; i < w->body_high; ++i) {
         const pg_body *b = &w->bodies[i];
         uint32_t r;
+        min_time[i] = PG_FIX_MAX;
         if (!pg__body_is_active(b)) continue;
         r = find_root(parent, i);
+        parent[i] = r;
         if (b->sleep_time < min_time[r]) min_time[r] = b->sleep_time;
     }
     /* An island still pushing out a deep overlap does not sleep: that push moves positions
      * only (solver.c, DEEP PUSH), so its bodies look at rest while they are not. */
-    for (i = 0; i < w->contact_count; ++i) {
+    for (i = 0; i < n_contacts; ++i) {
         const pg_contact *c = &w->contacts[i];
-        int32_t k;
-        for (k = 0; k < c->point_count; ++k) {
-            if (c->points[k].push_impulse == 0) continue;
-            if (pg__body_is_active(&w->bodies[c->body_a])) min_time[find_root(parent, c->body_a)] = 0;
-            if (pg__body_is_active(&w->bodies[c->body_b])) min_time[find_root(parent, c->body_b)] = 0;
-        }
+        int32_t n = c->point_count; /* 0, 1 or 2 */
+        if (!((n > 0 && c->points[0].push_impulse != 0) || (n > 1 && c->points[1].push_impulse != 0))) continue;
+        if (pg__body_is_active(&w->bodies[c->body_a])) min_time[parent[c->body_a]] = 0;
+        if (pg__body_is_active(&w->bodies[c->body_b])) min_time[parent[c->body_b]] = 0;
     }
+    rest = rest_threshold(w, dt);
     for (i = 0; i < w->body_high; ++i) {
         pg_body *b = &w->bodies[i];
         uint32_t r;
         if (!pg__body_is_active(b)) continue;
-        r = find_root(parent, i);
-        if (rested_long_enough(w, min_time[r], dt)) {
+        r = parent[i];
+        if (min_time[r] >= rest) {
             /* its cached world geometry is from the start of this step: recompute it at
              * the next, so cached geometry is always a function of the saved state */
             b->flags = (b->flags & ~(uint32_t)PG_BODY_FLAG_AWAKE) | PG_BODY_FLAG_GEOMETRY_DIRTY;
