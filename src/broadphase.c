@@ -466,6 +466,57 @@ static void bp_walk(const pg_aabb *boxes, const uint64_t *es, size_t ne, bp_out 
     }
 }
 
+/* First index of the sorted entries e[0..n) whose cell key is at least `key`. */
+static size_t bp_first_at(const uint64_t *e, size_t n, uint64_t key)
+{
+    uint64_t want = key << 32;
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2u;
+        if (e[mid] < want) lo = mid + 1u;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* Pairs of the large passive proxy l with the binned active proxies. Every active box
+ * that overlaps it has a cell in its clipped cell range (that range is never empty for a
+ * large passive proxy, and each axis of an overlapping box reaches it even where l's box
+ * is malformed within one cell), so the actives are looked for there when that is
+ * cheaper than testing all of them: each row of the range is one run of the sorted
+ * entries (found by binary search), and each active is taken from the first cell the two
+ * ranges share, as in the cell walk. */
+static void bp_large_passive(const bp_grid *g, const uint64_t *es, size_t ne, uint32_t l, bp_out *out)
+{
+    const pg_aabb *bl = &g->boxes[l];
+    int32_t lx = bp_max32(bl->lo.x >> g->s, g->x0), ly = bp_max32(bl->lo.y >> g->s, g->y0);
+    int32_t hx = bp_min32(bl->hi.x >> g->s, g->x1), hy = bp_min32(bl->hi.y >> g->s, g->y1), cy;
+    uint64_t nrows = (uint64_t)((int64_t)hy - ly) + 1u, ncells = nrows * ((uint64_t)((int64_t)hx - lx) + 1u);
+    /* the entries of the range, estimated from the average per cell: ncells < 2^31 and
+     * ne <= 2^33 keep the product below 2^64 */
+    uint64_t scan = 2u * ncells >= g->cells ? ne : ncells * ne / g->cells;
+    uint32_t u;
+    if (nrows * 80u + scan * 8u >= (uint64_t)g->nbact * 10u) {
+        for (u = 0; u < g->nbact; ++u) {
+            uint32_t j = (uint32_t)g->list[g->count - 1u - u];
+            if (bp_overlap(bl, &g->boxes[j])) bp_emit(out, l, j);
+        }
+        return;
+    }
+    for (cy = ly; cy <= hy; ++cy) {
+        uint64_t row = (uint64_t)(cy - g->y0) * g->wx, k0 = row + (uint64_t)(lx - g->x0), k1 = row + (uint64_t)(hx - g->x0);
+        uint64_t need = cy == ly ? 0u : BP_FY; /* below l's first row: the active's first row */
+        size_t t;
+        for (t = bp_first_at(es, ne, k0); t < ne && (es[t] >> 32) <= k1; ++t) {
+            uint64_t e = es[t];
+            uint32_t a = (uint32_t)(e & BP_IDX);
+            if ((e & BP_PASSIVE) || (e & need) != need) continue;
+            if (!(e & BP_FX) && (e >> 32) != k0) continue; /* neither's first column */
+            if (bp_overlap(bl, &g->boxes[a])) bp_emit(out, l, a);
+        }
+    }
+}
+
 int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t count,
                         pg_pair *pairs, uint32_t pair_capacity, uint32_t *pair_count,
                         void *scratch, size_t scratch_bytes)
@@ -590,11 +641,7 @@ int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t cou
             }
         } else {
             /* against the binned actives (large actives test it themselves) */
-            uint32_t u;
-            for (u = 0; u < g.nbact; ++u) {
-                uint32_t j = (uint32_t)g.list[count - 1u - u];
-                if (bp_overlap(bl, &boxes[j])) bp_emit(&out, l, j);
-            }
+            bp_large_passive(&g, es, ne, l, &out);
         }
     }
 
