@@ -27,7 +27,8 @@ static pg_fix mix_friction(pg_fix a, pg_fix b) { return pg_fix_sqrt(pg_fix_mul(a
 /* The bouncier surface wins. */
 static pg_fix mix_restitution(pg_fix a, pg_fix b) { return a > b ? a : b; }
 
-static int key_less(uint32_t a0, uint32_t b0, uint32_t a1, uint32_t b1) { return a0 < a1 || (a0 == a1 && b0 < b1); }
+/* The sort key (shape_a, shape_b) as one number. */
+static uint64_t pair_key(uint32_t sa, uint32_t sb) { return ((uint64_t)sa << 32) | sb; }
 
 /* Run the narrowphase for (sa, sb) into *c, warm-starting from `old` when given. */
 static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact *old, pg_contact *c)
@@ -84,6 +85,7 @@ static int body_was_active(const pg_world *w, uint32_t shape) { return (w->proxy
 pg_result pg__update_contacts(pg_world *w)
 {
     uint32_t n_proxies = 0, n_pairs = 0, s, i = 0, j, out = 0, n_old = w->contact_count;
+    uint64_t okey;
     pg_contact *old = w->contacts, *next = w->contacts_next;
     int overflow;
 
@@ -104,17 +106,22 @@ pg_result pg__update_contacts(pg_world *w)
     w->stats.pair_count = n_pairs;
 
     /* Merge the old contact list with the new pairs, both sorted by shape pair: each pair
-     * that can collide, after the old contacts that sort before it. */
+     * that can collide, after the old contacts that sort before it. okey is the next old
+     * contact's key; past the end (and for the end of the pairs) UINT64_MAX, above every
+     * key (shape indices are below 2^24). */
+    okey = n_old > 0 ? pair_key(old[0].shape_a, old[0].shape_b) : UINT64_MAX;
     for (j = 0; j <= n_pairs; ++j) {
         uint32_t pa = 0, pb = 0;
+        uint64_t pkey = UINT64_MAX;
         const pg_contact *prev = NULL;
         pg_contact *c;
         if (j < n_pairs) {
             pa = w->proxy_shape[w->pairs[j].a];
             pb = w->proxy_shape[w->pairs[j].b];
             if (!shapes_should_collide(w, pa, pb)) continue;
+            pkey = pair_key(pa, pb);
         }
-        for (; i < n_old && (j == n_pairs || key_less(old[i].shape_a, old[i].shape_b, pa, pb)); ++i) {
+        while (okey < pkey) {
             /* not found this step: keep it if both sides were passive, else it ended */
             const pg_contact *o = &old[i];
             int kept = 0;
@@ -128,9 +135,14 @@ pg_result pg__update_contacts(pg_world *w)
                 }
             }
             if (!kept) pg__push_end_event(w, o);
+            ++i;
+            okey = i < n_old ? pair_key(old[i].shape_a, old[i].shape_b) : UINT64_MAX;
         }
         if (j == n_pairs) break;
-        if (i < n_old && old[i].shape_a == pa && old[i].shape_b == pb) prev = &old[i++];
+        if (okey == pkey) {
+            prev = &old[i++];
+            okey = i < n_old ? pair_key(old[i].shape_a, old[i].shape_b) : UINT64_MAX;
+        }
         if (out >= w->def.max_contacts) {
             w->stats.capacity_misses += 1u;
             if (prev != NULL) pg__push_end_event(w, prev);
