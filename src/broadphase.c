@@ -187,7 +187,7 @@ static void bp_emit_slow(bp_out *o, uint64_t key)
     o->pk[o->n++] = key;
 }
 
-static void bp_emit(bp_out *o, uint32_t a, uint32_t b)
+static inline void bp_emit(bp_out *o, uint32_t a, uint32_t b)
 {
     uint32_t lo = a < b ? a : b, hi = a < b ? b : a;
     uint64_t key = ((uint64_t)lo << o->nb) | hi;
