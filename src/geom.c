@@ -161,7 +161,18 @@ void pg__geom_place_slot(const pg_geom *local, pg_vec2 position, pg_rot rotation
      * slot): rewriting all 8 entries every step was 4.5 % of a rain step, where a circle
      * uses one. */
     int32_t before = slot->count;
-    place(local, position, rotation, slot);
+    const pg_vec2 *v = local->vertices;
+    if (local->count == 1 && v[0].x == 0 && v[0].y == 0 && local->normals[0].x == 0 && local->normals[0].y == 0 &&
+        local->centroid.x == 0 && local->centroid.y == 0) {
+        /* a ball centred on its body's point: what place() gives it, without its set-up */
+        pg_vec2 at = pg_v2(pg__sat64(position.x), pg__sat64(position.y));
+        slot->vertices[0] = at;
+        slot->normals[0] = local->normals[0];
+        slot->centroid = at;
+        slot->radius = local->radius;
+    } else {
+        place(local, position, rotation, slot);
+    }
     if (before > local->count) clear_tail(slot, local->count, before <= PG_MAX_POLYGON_VERTICES ? before : PG_MAX_POLYGON_VERTICES);
     slot->count = local->count;
 }
