@@ -89,10 +89,14 @@ void pg__update_sleep(pg_world *w)
     pg_fix *min_time = (pg_fix *)(void *)w->solver_scratch; /* solver scratch is free after the solve */
     pg_fix longest = 0; /* the longest rest of an awake body */
 
+    /* parent[i] is PG_NULL_INDEX for a body that is not active (nothing here changes which
+     * are until the last loop, and only active bodies are ever united), so the loops
+     * below ask it instead of the body. */
     for (i = 0; i < w->body_high; ++i) {
         pg_body *b = &w->bodies[i];
-        parent[i] = i;
+        parent[i] = PG_NULL_INDEX;
         if (!pg__body_is_active(b)) continue;
+        parent[i] = i;
         if (!body_at_rest(w, b, lin_tol2, ang_tol)) {
             b->sleep_time = 0;
         } else if (b->sleep_time < PG_FIX_C(1000)) {
@@ -105,22 +109,20 @@ void pg__update_sleep(pg_world *w)
     if (!rested_long_enough(w, longest, dt)) return;
     for (i = 0; i < n_contacts; ++i) {
         const pg_contact *c = &w->contacts[i];
-        const pg_body *a = &w->bodies[c->body_a], *b = &w->bodies[c->body_b];
-        if (c->point_count == 0) continue;
-        if (a->type == PG_BODY_DYNAMIC && b->type == PG_BODY_DYNAMIC && pg__body_is_active(a) && pg__body_is_active(b))
+        if (c->point_count == 0 || parent[c->body_a] == PG_NULL_INDEX || parent[c->body_b] == PG_NULL_INDEX) continue;
+        if (w->bodies[c->body_a].type == PG_BODY_DYNAMIC && w->bodies[c->body_b].type == PG_BODY_DYNAMIC)
             unite(parent, c->body_a, c->body_b);
     }
     /* Each active body's root, kept in parent[i] so the loops below read it directly. The
      * root is the lowest index of its island (at most i) and is itself active, so its
      * min_time was initialised earlier in this same loop. */
     for (i = 0; i < w->body_high; ++i) {
-        const pg_body *b = &w->bodies[i];
         uint32_t r;
         min_time[i] = PG_FIX_MAX;
-        if (!pg__body_is_active(b)) continue;
+        if (parent[i] == PG_NULL_INDEX) continue;
         r = find_root(parent, i);
         parent[i] = r;
-        if (b->sleep_time < min_time[r]) min_time[r] = b->sleep_time;
+        if (w->bodies[i].sleep_time < min_time[r]) min_time[r] = w->bodies[i].sleep_time;
     }
     /* An island still pushing out a deep overlap does not sleep: that push moves positions
      * only (solver.c, DEEP PUSH), so its bodies look at rest while they are not. */
@@ -128,18 +130,17 @@ void pg__update_sleep(pg_world *w)
         const pg_contact *c = &w->contacts[i];
         int32_t n = c->point_count; /* 0, 1 or 2 */
         if (!((n > 0 && c->points[0].push_impulse != 0) || (n > 1 && c->points[1].push_impulse != 0))) continue;
-        if (pg__body_is_active(&w->bodies[c->body_a])) min_time[parent[c->body_a]] = 0;
-        if (pg__body_is_active(&w->bodies[c->body_b])) min_time[parent[c->body_b]] = 0;
+        if (parent[c->body_a] != PG_NULL_INDEX) min_time[parent[c->body_a]] = 0;
+        if (parent[c->body_b] != PG_NULL_INDEX) min_time[parent[c->body_b]] = 0;
     }
     rest = rest_threshold(w, dt);
     for (i = 0; i < w->body_high; ++i) {
-        pg_body *b = &w->bodies[i];
-        uint32_t r;
-        if (!pg__body_is_active(b)) continue;
-        r = parent[i];
-        if (min_time[r] >= rest) {
+        uint32_t r = parent[i];
+        if (r == PG_NULL_INDEX || min_time[r] < rest) continue;
+        {
             /* its cached world geometry is from the start of this step: recompute it at
              * the next, so cached geometry is always a function of the saved state */
+            pg_body *b = &w->bodies[i];
             b->flags = (b->flags & ~(uint32_t)PG_BODY_FLAG_AWAKE) | PG_BODY_FLAG_GEOMETRY_DIRTY;
             b->v = pg_v2_zero();
             b->w = 0;
