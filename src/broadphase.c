@@ -524,6 +524,8 @@ int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t cou
     uint64_t sum = 0, mean;
     uint32_t nact = 0, i;
     int have = 0;
+    int64_t min_side = 0, max_side = 0;
+    int32_t lo_x = INT32_MAX, lo_y = INT32_MAX, hi_x = INT32_MIN, hi_y = INT32_MIN;
     size_t t, ne;
     uint64_t *es;
     bp_grid g;
@@ -532,11 +534,23 @@ int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t cou
     *pair_count = 0;
     if (count > BP_MAX_PROXIES || scratch_bytes < pg_broadphase_scratch_bytes(count, pair_capacity)) return -2;
 
+    /* the mean extent of the active proxies, and the bounds of their boxes */
     for (i = 0; i < count; ++i) {
-        if (flags[i] & PG_PROXY_ACTIVE) {
-            ++nact;
-            sum += bp_extent(&boxes[i]);
-        }
+        const pg_aabb *b = &boxes[i];
+        int64_t w, h;
+        if (!(flags[i] & PG_PROXY_ACTIVE)) continue;
+        ++nact;
+        sum += bp_extent(b);
+        w = (int64_t)b->hi.x - b->lo.x;
+        h = (int64_t)b->hi.y - b->lo.y;
+        if (w < min_side) min_side = w;
+        if (h < min_side) min_side = h;
+        if (w > max_side) max_side = w;
+        if (h > max_side) max_side = h;
+        lo_x = bp_min32(lo_x, b->lo.x);
+        lo_y = bp_min32(lo_y, b->lo.y);
+        hi_x = bp_max32(hi_x, b->hi.x);
+        hi_y = bp_max32(hi_y, b->hi.y);
     }
     if (nact == 0) return 0; /* a fully passive world costs one pass over the flags */
 
@@ -553,8 +567,22 @@ int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t cou
     while (g.s < BP_MAX_SHIFT && ((uint64_t)1 << g.s) < mean) ++g.s;
 
     /* rectangle of the cells covered by binnable active proxies; grow the cells until
-     * a cell key of that rectangle fits in 32 bits (always true from s = 16 on) */
-    for (;;) {
+     * a cell key of that rectangle fits in 32 bits (always true from s = 16 on).
+     * When no active box is inverted and none is 7 cells wide or high, each spans at most
+     * 8 cells ((hi >> s) - (lo >> s) <= ((hi - lo) >> s) + 1 <= 7), so all are binnable
+     * and the rectangle is the bounds above in cells (the shift is monotone): the pass
+     * below is not needed when that rectangle fits. */
+    if (min_side >= 0 && max_side < ((int64_t)7 << g.s)) {
+        int32_t x0 = lo_x >> g.s, y0 = lo_y >> g.s, x1 = hi_x >> g.s, y1 = hi_y >> g.s;
+        uint64_t wx = (uint64_t)((int64_t)x1 - x0) + 1u, wy = (uint64_t)((int64_t)y1 - y0) + 1u;
+        if (wx * wy <= ((uint64_t)1 << 32)) {
+            g.x0 = x0; g.y0 = y0; g.x1 = x1; g.y1 = y1;
+            g.wx = wx;
+            g.cells = wx * wy;
+            have = 1;
+        }
+    }
+    while (!have) {
         int32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
         uint64_t wx, wy;
         have = 0;
@@ -584,6 +612,7 @@ int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t cou
             g.cells = wx * wy;
             break;
         }
+        have = 0;
         ++g.s;
     }
 
