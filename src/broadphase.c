@@ -264,17 +264,24 @@ static int32_t bp_min32(int32_t a, int32_t b) { return a < b ? a : b; }
 
 static int bp_is_large(const uint64_t *lbits, uint32_t i) { return (int)((lbits[i >> 6] >> (i & 63u)) & 1u); }
 
-/* Is there an entry with cell `key` in the sorted entries e[0..n)? */
-static int bp_has_cell(const uint64_t *e, size_t n, uint32_t key)
+/* First index of the sorted entries e[0..n) whose cell key is at least `key`. */
+static size_t bp_first_at(const uint64_t *e, size_t n, uint64_t key)
 {
-    uint64_t want = (uint64_t)key << 32;
+    uint64_t want = key << 32;
     size_t lo = 0, hi = n;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2u;
         if (e[mid] < want) lo = mid + 1u;
         else hi = mid;
     }
-    return lo < n && (uint32_t)(e[lo] >> 32) == key;
+    return lo;
+}
+
+/* Is there an entry with cell `key` in the sorted entries e[0..n)? */
+static int bp_has_cell(const uint64_t *e, size_t n, uint32_t key)
+{
+    size_t t = bp_first_at(e, n, key);
+    return t < n && (uint32_t)(e[t] >> 32) == key;
 }
 
 /* ---- the grid ---------------------------------------------------------------------- */
@@ -464,19 +471,6 @@ static void bp_walk(const pg_aabb *boxes, const uint64_t *es, size_t ne, bp_out 
         }
         ia = ga;
     }
-}
-
-/* First index of the sorted entries e[0..n) whose cell key is at least `key`. */
-static size_t bp_first_at(const uint64_t *e, size_t n, uint64_t key)
-{
-    uint64_t want = key << 32;
-    size_t lo = 0, hi = n;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2u;
-        if (e[mid] < want) lo = mid + 1u;
-        else hi = mid;
-    }
-    return lo;
 }
 
 /* Pairs of the large passive proxy l with the binned active proxies. Every active box
