@@ -333,6 +333,39 @@ static int32_t ratio_q(int64_t num, denominator d, int q)
     return (int32_t)(r > INT32_MAX ? INT32_MAX : r < -INT32_MAX ? -INT32_MAX : r);
 }
 
+/* num scaled by 2^-shift as ratio_q scales it (rounded as pg__round_shift64 for shift > 0,
+ * exact for shift <= 0), in one form without a branch: (num m + half + (sign & neg)) >> s
+ * with m = 1, half = 2^(shift-1), neg = -1, s = shift for shift > 0 and m = 2^-shift, half =
+ * neg = s = 0 otherwise (num m is the product ratio_q forms). A row's four ratios share it. */
+typedef struct scaling { int64_t m, half, neg; int s; } scaling;
+
+static inline scaling make_scaling(int shift)
+{
+    scaling sc;
+    sc.m = shift >= 0 ? 1 : (int64_t)1 << -shift;
+    sc.half = shift > 0 ? (int64_t)1 << (shift - 1) : 0;
+    sc.neg = shift > 0 ? -1 : 0;
+    sc.s = shift > 0 ? shift : 0;
+    return sc;
+}
+
+static inline int64_t scale_num(int64_t num, scaling sc) { return (num * sc.m + sc.half + ((num >> 63) & sc.neg)) >> sc.s; }
+
+/* ratio_q(num, d, 30) for an inverse mass 0 <= num <= K: n <= K31 (rounding is monotone)
+ * and inv <= 2^62 / K31 + 1/2, so 0 <= n inv < 2^62 + 2^30 and the result is at most
+ * 2^30 + 1: ratio_q's clamp never acts, and for n inv >= 0 its rounding is (x + 2^31) >> 32. */
+static inline int32_t ratio_q30_mass(int64_t num, denominator d, scaling sc)
+{
+    return (int32_t)((((num * sc.m + sc.half) >> sc.s) * d.inv + (INT64_C(1) << 31)) >> 32);
+}
+
+/* ratio_q(num, d, 24), with the bounds and the clamp of ratio_q. */
+static inline int32_t ratio_q24(int64_t num, denominator d, scaling sc)
+{
+    int64_t r = pg__round_shift64(scale_num(num, sc) * (d.inv >> 8), 30);
+    return (int32_t)(r > INT32_MAX ? INT32_MAX : r < -INT32_MAX ? -INT32_MAX : r);
+}
+
 /* Kt / Kn in Q16.16 from the two normalised reciprocals: (inv_n / inv_t) 2^(shift_t - shift_n). */
 static pg_fix k_ratio(denominator t, denominator n)
 {
@@ -373,6 +406,10 @@ static inline int64_t mul_q16(int64_t a, pg_fix c)
     return (a < 0) != (c < 0) ? -(int64_t)r : (int64_t)r;
 }
 
+/* One row's coefficients: the linear ones kA d, kB d (Q2.30), the angular ones gA, gB
+ * (Q8.24) and the row's normalised denominator. */
+typedef struct row_coef { int32_t lA_x, lA_y, lB_x, lB_y, gA, gB; denominator den; } row_coef;
+
 /* row_coefficients for a row whose K does not fit int64: K, tA and tB scaled by 2^-s.
  * invI c^2 / 2^32 < 2^(bits(invI) + 2 bits(c) - 32) =: 2^(b - 32); with s = b - 92 each
  * scaled term is below 2^60 and K below 2^62. b >= 94 here (a term or the sum passed
@@ -380,66 +417,86 @@ static inline int64_t mul_q16(int64_t a, pg_fix c)
  * alike; kA = invm_A / (K 2^s), so for kA, kB and for k_ratio, which compares two rows,
  * the scale joins the denominator's shift (inverse masses are below 2^54: past a shift
  * of 62 their ratio rounds to 0). */
-PG__NOINLINE denominator row_coefficients_scaled(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d,
-                                                 int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
+PG__NOINLINE row_coef row_coefficients_scaled(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d)
 {
     int bA = pg__bit_length64((uint64_t)A->inv_inertia) + 2 * pg__bit_length64(pg__mag64(cA));
     int bB = pg__bit_length64((uint64_t)B->inv_inertia) + 2 * pg__bit_length64(pg__mag64(cB));
     int s = (bA > bB ? bA : bB) - 92;
     int64_t tA = pg__mul64_shr(A->inv_inertia, cA, 16 + s), tB = pg__mul64_shr(B->inv_inertia, cB, 16 + s);
     int64_t K = pg__round_shift64(A->inv_mass + B->inv_mass, s) + mul_q16(tA, cA) + mul_q16(tB, cB);
-    denominator den = make_denominator(K);
+    row_coef r;
     int32_t kA, kB;
-    *gA = tA != 0 ? ratio_q(tA, den, 24) : 0;
-    *gB = tB != 0 ? ratio_q(tB, den, 24) : 0;
-    den.shift += s;
-    kA = den.shift > 62 ? 0 : ratio_q(A->inv_mass, den, 30);
-    kB = den.shift > 62 ? 0 : ratio_q(B->inv_mass, den, 30);
-    *lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
-    *lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
-    *lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
-    *lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
-    return den;
+    r.den = make_denominator(K);
+    r.gA = tA != 0 ? ratio_q(tA, r.den, 24) : 0;
+    r.gB = tB != 0 ? ratio_q(tB, r.den, 24) : 0;
+    r.den.shift += s;
+    kA = r.den.shift > 62 ? 0 : ratio_q(A->inv_mass, r.den, 30);
+    kB = r.den.shift > 62 ? 0 : ratio_q(B->inv_mass, r.den, 30);
+    r.lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
+    r.lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
+    r.lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
+    r.lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
+    return r;
 }
 
-/* Coefficients of one row (normal or tangent) for one point; returns the row's
- * normalised denominator. gA = invI_A (rA x d) / K is bounded by 1 / (2 k) for the
- * radius of gyration k >= 2^-8 m, which body.c makes a condition of a rotating body
- * (pg__mass_data_problem), so it fits Q8.24.
+/* Coefficients of one row (normal or tangent) for one point. gA = invI_A (rA x d) / K is
+ * bounded by 1 / (2 k) for the radius of gyration k >= 2^-8 m, which body.c makes a
+ * condition of a rotating body (pg__mass_data_problem), so it fits Q8.24.
  * K itself need not fit int64: invI (r x d)^2 reaches 2^63 (Q38) for a ball of radius
  * 0.025 m and density 0.1 (invI = 1.6e7) at a lever arm of 1.44 m, which a massless
  * segment on the same body provides (the envelope allows 50 m). Such a row is computed
  * with every term scaled down (row_coefficients_scaled); a row whose K fits int64 is
  * computed as before. Forced inline into prepare_rows, its only caller: gcc left it out
  * of line, and writing its six results through pointers cost 1.8 % of the awake
- * pyramid's instructions (callgrind). */
-PG__INLINE_ROW denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation,
-                                            int32_t *lA_x, int32_t *lA_y, int32_t *lB_x, int32_t *lB_y, int32_t *gA, int32_t *gB)
+ * pyramid's instructions (callgrind).
+ * The four products invI c and t c are mul_q16's; where both sides are ordinary (the
+ * offset values OR-ed are below the limits exactly when each is) they are plain int64
+ * products and K needs no test. Two sides of one inverse mass (the pyramid's boxes on
+ * each other) share kA and k n. */
+PG__INLINE_ROW row_coef row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation)
 {
     int64_t K = A->inv_mass + B->inv_mass, tA = 0, tB = 0;
     int32_t kA, kB;
-    denominator den;
+    scaling sc;
+    row_coef r;
     if (rotation) {
         int64_t qA, qB;
-        tA = mul_q16(A->inv_inertia, cA); /* invI (r x d): Q38 per metre */
-        tB = mul_q16(B->inv_inertia, cB);
-        qA = mul_q16(tA, cA); /* >= 0; INT64_MAX when tA saturated (then |c| >= 1 m) */
-        qB = mul_q16(tB, cB);
-        /* K < 2^54 and qA, qB >= 0: below 2^61 each, the sum fits; else test exactly */
-        if (((uint64_t)qA | (uint64_t)qB) >= (UINT64_C(1) << 61) && (qA > INT64_MAX - K || qB > INT64_MAX - K - qA))
-            return row_coefficients_scaled(A, B, cA, cB, d, lA_x, lA_y, lB_x, lB_y, gA, gB);
+        /* the common case in one test: inverse inertias below 2^46 (a ball of radius 0.25 m
+         * and density 1 has 2^45.4) and |c| <= 2^16 (1 m), so |t| < 2^46 and |q| < 2^46:
+         * every product fits and K too, exactly as mul_q16 computes them */
+        uint64_t rc = ((uint64_t)(int64_t)cA + (UINT64_C(1) << 16)) | ((uint64_t)(int64_t)cB + (UINT64_C(1) << 16));
+        if ((((uint64_t)A->inv_inertia | (uint64_t)B->inv_inertia) >> 46 | rc >> 17) == 0) {
+            tA = pg__round_shift64(A->inv_inertia * cA, 16); /* invI (r x d): Q38 per metre */
+            tB = pg__round_shift64(B->inv_inertia * cB, 16);
+            qA = pg__round_shift64(tA * cA, 16); /* >= 0 */
+            qB = pg__round_shift64(tB * cB, 16);
+        } else {
+            tA = mul_q16(A->inv_inertia, cA);
+            tB = mul_q16(B->inv_inertia, cB);
+            qA = mul_q16(tA, cA); /* >= 0; INT64_MAX when tA saturated (then |c| >= 1 m) */
+            qB = mul_q16(tB, cB);
+            /* K < 2^54 and qA, qB >= 0: below 2^61 each, the sum fits; else test exactly */
+            if (((uint64_t)qA | (uint64_t)qB) >= (UINT64_C(1) << 61) && (qA > INT64_MAX - K || qB > INT64_MAX - K - qA))
+                return row_coefficients_scaled(A, B, cA, cB, d);
+        }
         K += qA + qB;
     }
-    den = make_denominator(K);
-    kA = ratio_q(A->inv_mass, den, 30);
-    kB = ratio_q(B->inv_mass, den, 30);
-    *lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
-    *lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
-    *lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
-    *lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
-    *gA = tA != 0 ? ratio_q(tA, den, 24) : 0;
-    *gB = tB != 0 ? ratio_q(tB, den, 24) : 0;
-    return den;
+    r.den = make_denominator(K);
+    sc = make_scaling(r.den.shift);
+    kA = ratio_q30_mass(A->inv_mass, r.den, sc);
+    r.lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
+    r.lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
+    if (B->inv_mass == A->inv_mass) {
+        r.lB_x = r.lA_x;
+        r.lB_y = r.lA_y;
+    } else {
+        kB = ratio_q30_mass(B->inv_mass, r.den, sc);
+        r.lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
+        r.lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
+    }
+    r.gA = tA != 0 ? ratio_q24(tA, r.den, sc) : 0;
+    r.gB = tB != 0 ? ratio_q24(tB, r.den, sc) : 0;
+    return r;
 }
 
 /* What a unit of lambda on point q's normal row does to point p's relative normal speed,
@@ -515,6 +572,8 @@ PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
     const pg_world *w = ctx->world;
     const pg_body *A = c->a == ctx->dummy ? &immovable : &w->bodies[c->a];
     const pg_body *B = c->b == ctx->dummy ? &immovable : &w->bodies[c->b];
+    const int friction = (ctx->effects & PG_EFFECT_FRICTION) != 0;
+    const pg_fix mu = friction ? w->contacts[c->contact].friction : 0;
     pg_dir t;
     denominator dt = { 0, 0 };
     int32_t k;
@@ -522,18 +581,28 @@ PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
     t.y = -c->n.x;
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
-        denominator dn = row_coefficients(A, B, p->cnA, p->cnB, c->n, ctx->rotation, &p->lnA_x, &p->lnA_y, &p->lnB_x, &p->lnB_y,
-                                          &p->gnA, &p->gnB);
-        p->friction_ratio = 0;
-        p->ltA_x = p->ltA_y = p->ltB_x = p->ltB_y = p->gtA = p->gtB = 0;
-        if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
-            /* with CENTRAL FRICTION, p[1] has no tangent row of its own: its ratio turns its
-             * normal impulse into the bound of p[0]'s row, Kt of that row over its own Kn */
-            if (k == 0 || !c->central_friction)
-                dt = row_coefficients(A, B, p->ctA, p->ctB, t, ctx->rotation, &p->ltA_x, &p->ltA_y, &p->ltB_x, &p->ltB_y, &p->gtA,
-                                      &p->gtB);
-            p->friction_ratio = pg_fix_mul(w->contacts[c->contact].friction, k_ratio(dt, dn));
+        row_coef rn = row_coefficients(A, B, p->cnA, p->cnB, c->n, ctx->rotation);
+        p->lnA_x = rn.lA_x;
+        p->lnA_y = rn.lA_y;
+        p->lnB_x = rn.lB_x;
+        p->lnB_y = rn.lB_y;
+        p->gnA = rn.gA;
+        p->gnB = rn.gB;
+        /* with CENTRAL FRICTION, p[1] has no tangent row of its own: its ratio turns its
+         * normal impulse into the bound of p[0]'s row, Kt of that row over its own Kn */
+        if (friction && (k == 0 || !c->central_friction)) {
+            row_coef rt = row_coefficients(A, B, p->ctA, p->ctB, t, ctx->rotation);
+            p->ltA_x = rt.lA_x;
+            p->ltA_y = rt.lA_y;
+            p->ltB_x = rt.lB_x;
+            p->ltB_y = rt.lB_y;
+            p->gtA = rt.gA;
+            p->gtB = rt.gB;
+            dt = rt.den;
+        } else {
+            p->ltA_x = p->ltA_y = p->ltB_x = p->ltB_y = p->gtA = p->gtB = 0;
         }
+        p->friction_ratio = friction ? pg_fix_mul(mu, k_ratio(dt, rn.den)) : 0;
     }
     setup_block(c);
     c->rows_ready = 1;
