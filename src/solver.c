@@ -333,37 +333,46 @@ static int32_t ratio_q(int64_t num, denominator d, int q)
     return (int32_t)(r > INT32_MAX ? INT32_MAX : r < -INT32_MAX ? -INT32_MAX : r);
 }
 
-/* num scaled by 2^-shift as ratio_q scales it (rounded as pg__round_shift64 for shift > 0,
- * exact for shift <= 0), in one form without a branch: (num m + half + (sign & neg)) >> s
- * with m = 1, half = 2^(shift-1), neg = -1, s = shift for shift > 0 and m = 2^-shift, half =
- * neg = s = 0 otherwise (num m is the product ratio_q forms). A row's four ratios share it. */
-typedef struct scaling { int64_t m, half, neg; int s; } scaling;
+/* A row's denominator (make_denominator's, for K >= 0) with what its ratios need, made
+ * without a branch on the sign of the shift. ratio_q's n, num scaled by 2^-shift, is
+ * (num + half + (sign & neg)) >> s, pg__round_shift64's rounding, for shift > 0; for
+ * shift <= 0 it is num 2^-shift, exact, so there the factor joins the reciprocal instead:
+ * n inv = num (inv 2^-shift), the same product. With s = max(shift, 0) and l = s - shift
+ * = max(-shift, 0) both are one form: half = 2^s / 2, neg = -1 or 0, inv30 = inv 2^l and
+ * inv24 = (inv >> 8) 2^l. K31 is made the same way (K >= 0: no sign term). l <= 30 for
+ * K >= 1, so inv 2^l <= 2^62 (K = 0: l = 31 and inv = 0); (inv >> 8) 2^l <= 2^54. */
+typedef struct row_den { denominator d; int64_t half, neg, inv30, inv24; int s; } row_den;
 
-static inline scaling make_scaling(int shift)
+static inline row_den make_row_denominator(int64_t K)
 {
-    scaling sc;
-    sc.m = shift >= 0 ? 1 : (int64_t)1 << -shift;
-    sc.half = shift > 0 ? (int64_t)1 << (shift - 1) : 0;
-    sc.neg = shift > 0 ? -1 : 0;
-    sc.s = shift > 0 ? shift : 0;
-    return sc;
+    row_den r;
+    int shift = pg__bit_length64((uint64_t)K) - 31;
+    int s = shift > 0 ? shift : 0, l = s - shift;
+    int64_t K31;
+    r.half = ((int64_t)1 << s) >> 1;
+    r.neg = -(int64_t)(shift > 0);
+    r.s = s;
+    K31 = ((K + r.half) >> s) << l; /* in [2^30, 2^31) for K > 0 */
+    r.d.shift = shift;
+    r.d.inv = K31 > 0 ? (int64_t)(((UINT64_C(1) << 62) + (uint64_t)K31 / 2u) / (uint64_t)K31) : 0;
+    r.inv30 = r.d.inv << l;
+    r.inv24 = (r.d.inv >> 8) << l;
+    return r;
 }
-
-static inline int64_t scale_num(int64_t num, scaling sc) { return (num * sc.m + sc.half + ((num >> 63) & sc.neg)) >> sc.s; }
 
 /* ratio_q(num, d, 30) for an inverse mass 0 <= num <= K: n <= K31 (rounding is monotone)
  * and inv <= 2^62 / K31 + 1/2, so 0 <= n inv < 2^62 + 2^30 and the result is at most
  * 2^30 + 1: ratio_q's clamp never acts, and for n inv >= 0 its rounding is (x + 2^31) >> 32. */
-static inline int32_t ratio_q30_mass(int64_t num, denominator d, scaling sc)
+static inline int32_t ratio_q30_mass(int64_t num, const row_den *r)
 {
-    return (int32_t)((((num * sc.m + sc.half) >> sc.s) * d.inv + (INT64_C(1) << 31)) >> 32);
+    return (int32_t)((((num + r->half) >> r->s) * r->inv30 + (INT64_C(1) << 31)) >> 32);
 }
 
 /* ratio_q(num, d, 24), with the bounds and the clamp of ratio_q. */
-static inline int32_t ratio_q24(int64_t num, denominator d, scaling sc)
+static inline int32_t ratio_q24(int64_t num, const row_den *r)
 {
-    int64_t r = pg__round_shift64(scale_num(num, sc) * (d.inv >> 8), 30);
-    return (int32_t)(r > INT32_MAX ? INT32_MAX : r < -INT32_MAX ? -INT32_MAX : r);
+    int64_t x = pg__round_shift64(((num + r->half + ((num >> 63) & r->neg)) >> r->s) * r->inv24, 30);
+    return (int32_t)(x > INT32_MAX ? INT32_MAX : x < -INT32_MAX ? -INT32_MAX : x);
 }
 
 /* Kt / Kn in Q16.16 from the two normalised reciprocals: (inv_n / inv_t) 2^(shift_t - shift_n). */
@@ -406,9 +415,27 @@ static inline int64_t mul_q16(int64_t a, pg_fix c)
     return (a < 0) != (c < 0) ? -(int64_t)r : (int64_t)r;
 }
 
-/* One row's coefficients: the linear ones kA d, kB d (Q2.30), the angular ones gA, gB
- * (Q8.24) and the row's normalised denominator. */
-typedef struct row_coef { int32_t lA_x, lA_y, lB_x, lB_y, gA, gB; denominator den; } row_coef;
+/* One row's coefficients into point p: the linear ones kA d, kB d (Q2.30) and the angular
+ * ones gA, gB (Q8.24) of its normal row, or of its tangent row. */
+static inline void store_row(constraint_point *p, int tangent, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y, int32_t gA,
+                             int32_t gB)
+{
+    if (tangent) {
+        p->ltA_x = lA_x;
+        p->ltA_y = lA_y;
+        p->ltB_x = lB_x;
+        p->ltB_y = lB_y;
+        p->gtA = gA;
+        p->gtB = gB;
+    } else {
+        p->lnA_x = lA_x;
+        p->lnA_y = lA_y;
+        p->lnB_x = lB_x;
+        p->lnB_y = lB_y;
+        p->gnA = gA;
+        p->gnB = gB;
+    }
+}
 
 /* row_coefficients for a row whose K does not fit int64: K, tA and tB scaled by 2^-s.
  * invI c^2 / 2^32 < 2^(bits(invI) + 2 bits(c) - 32) =: 2^(b - 32); with s = b - 92 each
@@ -417,26 +444,24 @@ typedef struct row_coef { int32_t lA_x, lA_y, lB_x, lB_y, gA, gB; denominator de
  * alike; kA = invm_A / (K 2^s), so for kA, kB and for k_ratio, which compares two rows,
  * the scale joins the denominator's shift (inverse masses are below 2^54: past a shift
  * of 62 their ratio rounds to 0). */
-PG__NOINLINE row_coef row_coefficients_scaled(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d)
+PG__NOINLINE denominator row_coefficients_scaled(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d,
+                                                 constraint_point *p, int tangent)
 {
     int bA = pg__bit_length64((uint64_t)A->inv_inertia) + 2 * pg__bit_length64(pg__mag64(cA));
     int bB = pg__bit_length64((uint64_t)B->inv_inertia) + 2 * pg__bit_length64(pg__mag64(cB));
     int s = (bA > bB ? bA : bB) - 92;
     int64_t tA = pg__mul64_shr(A->inv_inertia, cA, 16 + s), tB = pg__mul64_shr(B->inv_inertia, cB, 16 + s);
     int64_t K = pg__round_shift64(A->inv_mass + B->inv_mass, s) + mul_q16(tA, cA) + mul_q16(tB, cB);
-    row_coef r;
-    int32_t kA, kB;
-    r.den = make_denominator(K);
-    r.gA = tA != 0 ? ratio_q(tA, r.den, 24) : 0;
-    r.gB = tB != 0 ? ratio_q(tB, r.den, 24) : 0;
-    r.den.shift += s;
-    kA = r.den.shift > 62 ? 0 : ratio_q(A->inv_mass, r.den, 30);
-    kB = r.den.shift > 62 ? 0 : ratio_q(B->inv_mass, r.den, 30);
-    r.lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
-    r.lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
-    r.lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
-    r.lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
-    return r;
+    denominator den = make_denominator(K);
+    int32_t kA, kB, gA, gB;
+    gA = tA != 0 ? ratio_q(tA, den, 24) : 0;
+    gB = tB != 0 ? ratio_q(tB, den, 24) : 0;
+    den.shift += s;
+    kA = den.shift > 62 ? 0 : ratio_q(A->inv_mass, den, 30);
+    kB = den.shift > 62 ? 0 : ratio_q(B->inv_mass, den, 30);
+    store_row(p, tangent, (int32_t)pg__round_shift64((int64_t)kA * d.x, 30), (int32_t)pg__round_shift64((int64_t)kA * d.y, 30),
+              (int32_t)pg__round_shift64((int64_t)kB * d.x, 30), (int32_t)pg__round_shift64((int64_t)kB * d.y, 30), gA, gB);
+    return den;
 }
 
 /* Coefficients of one row (normal or tangent) for one point. gA = invI_A (rA x d) / K is
@@ -453,12 +478,12 @@ PG__NOINLINE row_coef row_coefficients_scaled(const pg_body *A, const pg_body *B
  * offset values OR-ed are below the limits exactly when each is) they are plain int64
  * products and K needs no test. Two sides of one inverse mass (the pyramid's boxes on
  * each other) share kA and k n. */
-PG__INLINE_ROW row_coef row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation)
+PG__INLINE_ROW denominator row_coefficients(const pg_body *A, const pg_body *B, pg_fix cA, pg_fix cB, pg_dir d, int rotation,
+                                            constraint_point *p, int tangent)
 {
     int64_t K = A->inv_mass + B->inv_mass, tA = 0, tB = 0;
-    int32_t kA, kB;
-    scaling sc;
-    row_coef r;
+    int32_t kA, kB, lA_x, lA_y, lB_x, lB_y;
+    row_den rd;
     if (rotation) {
         int64_t qA, qB;
         /* the common case in one test: inverse inertias below 2^46 (a ball of radius 0.25 m
@@ -477,26 +502,24 @@ PG__INLINE_ROW row_coef row_coefficients(const pg_body *A, const pg_body *B, pg_
             qB = mul_q16(tB, cB);
             /* K < 2^54 and qA, qB >= 0: below 2^61 each, the sum fits; else test exactly */
             if (((uint64_t)qA | (uint64_t)qB) >= (UINT64_C(1) << 61) && (qA > INT64_MAX - K || qB > INT64_MAX - K - qA))
-                return row_coefficients_scaled(A, B, cA, cB, d);
+                return row_coefficients_scaled(A, B, cA, cB, d, p, tangent);
         }
         K += qA + qB;
     }
-    r.den = make_denominator(K);
-    sc = make_scaling(r.den.shift);
-    kA = ratio_q30_mass(A->inv_mass, r.den, sc);
-    r.lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
-    r.lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
+    rd = make_row_denominator(K); /* K >= 0: a sum of terms >= 0 that fits */
+    kA = ratio_q30_mass(A->inv_mass, &rd);
+    lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
+    lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
     if (B->inv_mass == A->inv_mass) {
-        r.lB_x = r.lA_x;
-        r.lB_y = r.lA_y;
+        lB_x = lA_x;
+        lB_y = lA_y;
     } else {
-        kB = ratio_q30_mass(B->inv_mass, r.den, sc);
-        r.lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
-        r.lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
+        kB = ratio_q30_mass(B->inv_mass, &rd);
+        lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
+        lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
     }
-    r.gA = tA != 0 ? ratio_q24(tA, r.den, sc) : 0;
-    r.gB = tB != 0 ? ratio_q24(tB, r.den, sc) : 0;
-    return r;
+    store_row(p, tangent, lA_x, lA_y, lB_x, lB_y, tA != 0 ? ratio_q24(tA, &rd) : 0, tB != 0 ? ratio_q24(tB, &rd) : 0);
+    return rd.d;
 }
 
 /* What a unit of lambda on point q's normal row does to point p's relative normal speed,
@@ -581,28 +604,12 @@ PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
     t.y = -c->n.x;
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
-        row_coef rn = row_coefficients(A, B, p->cnA, p->cnB, c->n, ctx->rotation);
-        p->lnA_x = rn.lA_x;
-        p->lnA_y = rn.lA_y;
-        p->lnB_x = rn.lB_x;
-        p->lnB_y = rn.lB_y;
-        p->gnA = rn.gA;
-        p->gnB = rn.gB;
+        denominator dn = row_coefficients(A, B, p->cnA, p->cnB, c->n, ctx->rotation, p, 0);
         /* with CENTRAL FRICTION, p[1] has no tangent row of its own: its ratio turns its
          * normal impulse into the bound of p[0]'s row, Kt of that row over its own Kn */
-        if (friction && (k == 0 || !c->central_friction)) {
-            row_coef rt = row_coefficients(A, B, p->ctA, p->ctB, t, ctx->rotation);
-            p->ltA_x = rt.lA_x;
-            p->ltA_y = rt.lA_y;
-            p->ltB_x = rt.lB_x;
-            p->ltB_y = rt.lB_y;
-            p->gtA = rt.gA;
-            p->gtB = rt.gB;
-            dt = rt.den;
-        } else {
-            p->ltA_x = p->ltA_y = p->ltB_x = p->ltB_y = p->gtA = p->gtB = 0;
-        }
-        p->friction_ratio = friction ? pg_fix_mul(mu, k_ratio(dt, rn.den)) : 0;
+        if (friction && (k == 0 || !c->central_friction)) dt = row_coefficients(A, B, p->ctA, p->ctB, t, ctx->rotation, p, 1);
+        else p->ltA_x = p->ltA_y = p->ltB_x = p->ltB_y = p->gtA = p->gtB = 0;
+        p->friction_ratio = friction ? pg_fix_mul(mu, k_ratio(dt, dn)) : 0;
     }
     setup_block(c);
     c->rows_ready = 1;
