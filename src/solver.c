@@ -1280,8 +1280,8 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
     const pg_body *A = &w->bodies[ct->body_a], *B = &w->bodies[ct->body_b];
     int activeA = pg__body_is_active(A), activeB = pg__body_is_active(B);
     int32_t k;
-    pg_dir t;
     int held = 0; /* a point has an impulse to warm start with */
+    int turnA, turnB;
     pg_vec2 A_center = A->center, B_center = B->center;
     /* A side that does not take part in this step is the dummy, and the rows must see
      * it as infinitely heavy so that no impulse ever moves the dummy, which stands in
@@ -1296,16 +1296,20 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
     c->count = ct->point_count;
     /* A side that cannot move gets the stiffer softness, and so does a pair whose
      * masses differ 4:1 or more: a soft contact's steady overlap grows with the load
-     * over the lighter body's mass, and this halves it where the ratio is large. */
-    c->soft_static = A->inv_mass == 0 || B->inv_mass == 0 || A->inv_mass / 4 >= B->inv_mass || B->inv_mass / 4 >= A->inv_mass;
+     * over the lighter body's mass, and this halves it where the ratio is large.
+     * (Inverse masses are >= 0: x / 4 is x >> 2, without the rounding toward 0.) */
+    c->soft_static = A->inv_mass == 0 || B->inv_mass == 0 || (A->inv_mass >> 2) >= B->inv_mass || (B->inv_mass >> 2) >= A->inv_mass;
     c->round_a = centred_circle(w, ct->shape_a, ct->body_a);
     c->round_b = centred_circle(w, ct->shape_b, ct->body_b);
     if (!c->round_a) bodies[c->a].turns_anchors = 1;
     if (!c->round_b) bodies[c->b].turns_anchors = 1;
     c->normal_linear = 1;
     c->restitution = (effects & PG_EFFECT_RESTITUTION) != 0 ? ct->restitution : 0;
-    t.x = c->n.y;
-    t.y = -c->n.x;
+    c->deep = 0; /* deep_push is set by every soft pass (set_push) before it is read */
+    /* No torque about a round side's centre, and none on a side that cannot turn in this
+     * step (its angular velocity is 0 and its inverse inertia too). */
+    turnA = !c->round_a && activeA && rotation;
+    turnB = !c->round_b && activeB && rotation;
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
         const pg_contact_point *cp = &ct->points[k];
@@ -1320,31 +1324,36 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
         }
         {
             /* in int64: a restored snapshot may hold any contact point, and anchors
-             * saturated at the edge of the range are up to 2^32 apart */
-            int64_t dx = (int64_t)p->rB.x - p->rA.x, dy = (int64_t)p->rB.y - p->rA.y;
-            int64_t along = pg__round_shift64(c->n.x * dx + c->n.y * dy, 30);
+             * saturated at the edge of the range are up to 2^32 apart. n . (rB - rA) is
+             * n . rB - n . rA exactly (each below 2^61.5), and r x t = -(n . r) exactly
+             * (t = (n.y, -n.x)): the tangent lever arms round the same two products */
+            int64_t nrA = (int64_t)c->n.x * p->rA.x + (int64_t)c->n.y * p->rA.y;
+            int64_t nrB = (int64_t)c->n.x * p->rB.x + (int64_t)c->n.y * p->rB.y;
+            int64_t along = pg__round_shift64(nrB - nrA, 30);
             p->adjusted_separation = pg__sat64((int64_t)cp->separation - along);
             /* what normal_separation finds before anything moves (dp = 0, dq = 1 make
              * each anchor exactly r), for the first substep's soft pass */
             p->separation = along + p->adjusted_separation;
+            p->ctA = (pg_fix)pg__round_shift64(-nrA, 30); /* cross_rd(rA, t) */
+            p->ctB = (pg_fix)pg__round_shift64(-nrB, 30);
         }
-        /* No torque about a round side's centre, and none on a side that cannot turn
-         * in this step (its angular velocity is 0 and its inverse inertia too). */
-        p->cnA = c->round_a || !activeA || !rotation ? 0 : cross_rd(p->rA, c->n);
-        p->cnB = c->round_b || !activeB || !rotation ? 0 : cross_rd(p->rB, c->n);
+        p->cnA = turnA ? cross_rd(p->rA, c->n) : 0;
+        p->cnB = turnB ? cross_rd(p->rB, c->n) : 0;
         if (p->cnA != 0 || p->cnB != 0) c->normal_linear = 0;
-        p->ctA = cross_rd(p->rA, t);
-        p->ctB = cross_rd(p->rB, t);
         p->normal_impulse = (pg_fix)clamp_lambda(cp->normal_impulse, 0, LAMBDA_MAX);
         p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
         p->max_normal_impulse = 0;
         if (p->normal_impulse != 0 || p->tangent_impulse != 0) held = 1;
         p->relative_velocity = 0; /* set before the point first pushes (APPROACH) */
         p->approach_start = p->approach_accel = 0;
-        if (c->restitution != 0) {
-            velocity va = load_velocity(&bodies[c->a]), vb = load_velocity(&bodies[c->b]), aa, ab;
-            aa.x = bodies[c->a].accel.x; aa.y = bodies[c->a].accel.y; aa.w = bodies[c->a].alpha;
-            ab.x = bodies[c->b].accel.x; ab.y = bodies[c->b].accel.y; ab.w = bodies[c->b].alpha;
+        if ((p->deep_impulse = (pg_fix)clamp_lambda(cp->push_impulse, 0, LAMBDA_MAX)) != 0) c->deep = held = *ctx->deep_seen = 1;
+    }
+    if (c->restitution != 0) {
+        velocity va = load_velocity(&bodies[c->a]), vb = load_velocity(&bodies[c->b]), aa, ab;
+        aa.x = bodies[c->a].accel.x; aa.y = bodies[c->a].accel.y; aa.w = bodies[c->a].alpha;
+        ab.x = bodies[c->b].accel.x; ab.y = bodies[c->b].accel.y; ab.w = bodies[c->b].alpha;
+        for (k = 0; k < c->count; ++k) {
+            constraint_point *p = &c->p[k];
             p->approach_start = pg__sat64(relative_speed(&va, &vb, c->n, p->cnA, p->cnB));
             p->approach_accel = pg__sat64(relative_speed(&aa, &ab, c->n, p->cnA, p->cnB));
         }
@@ -1360,10 +1369,6 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
         p1->tangent_impulse = 0;
     }
     c->rows_ready = 0;
-    c->deep = 0; /* deep_push is set by every soft pass (set_push) before it is read */
-    for (k = 0; k < c->count; ++k)
-        if ((c->p[k].deep_impulse = (pg_fix)clamp_lambda(ct->points[k].push_impulse, 0, LAMBDA_MAX)) != 0)
-            c->deep = held = *ctx->deep_seen = 1;
     c->block = 0; /* restitution reads it: a constraint whose rows never get set never pushed */
     if (held) prepare_rows(ctx, c);
 }
