@@ -587,16 +587,13 @@ typedef struct step_context {
     pg_vec2 gravity;         /* the acceleration gravity gives a body of gravity scale 1 */
 } step_context;
 
-/* The rows' coefficients of every point of c (normal and, with friction, tangent), the
- * friction ratios and the block: what LAZY ROWS defers. A pure function of the step's
- * start, so it gives the same values whenever it runs. */
-PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
+/* prepare_rows' loop over the points, with whether the normal and the tangent rows turn
+ * as constants where the caller has them. */
+PG__INLINE_ROW void prepare_point_rows(const step_context *ctx, constraint *c, const pg_body *A, const pg_body *B, int normal_turns,
+                                       int tangent_turns)
 {
-    const pg_world *w = ctx->world;
-    const pg_body *A = c->a == ctx->dummy ? &immovable : &w->bodies[c->a];
-    const pg_body *B = c->b == ctx->dummy ? &immovable : &w->bodies[c->b];
     const int friction = (ctx->effects & PG_EFFECT_FRICTION) != 0;
-    const pg_fix mu = friction ? w->contacts[c->contact].friction : 0;
+    const pg_fix mu = friction ? ctx->world->contacts[c->contact].friction : 0;
     pg_dir t;
     denominator dt = { 0, 0 };
     int32_t k;
@@ -604,13 +601,28 @@ PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
     t.y = -c->n.x;
     for (k = 0; k < c->count; ++k) {
         constraint_point *p = &c->p[k];
-        denominator dn = row_coefficients(A, B, p->cnA, p->cnB, c->n, ctx->rotation, p, 0);
+        denominator dn = row_coefficients(A, B, p->cnA, p->cnB, c->n, normal_turns, p, 0);
         /* with CENTRAL FRICTION, p[1] has no tangent row of its own: its ratio turns its
          * normal impulse into the bound of p[0]'s row, Kt of that row over its own Kn */
-        if (friction && (k == 0 || !c->central_friction)) dt = row_coefficients(A, B, p->ctA, p->ctB, t, ctx->rotation, p, 1);
+        if (friction && (k == 0 || !c->central_friction)) dt = row_coefficients(A, B, p->ctA, p->ctB, t, tangent_turns, p, 1);
         else p->ltA_x = p->ltA_y = p->ltB_x = p->ltB_y = p->gtA = p->gtB = 0;
         p->friction_ratio = friction ? pg_fix_mul(mu, k_ratio(dt, dn)) : 0;
     }
+}
+
+/* The rows' coefficients of every point of c (normal and, with friction, tangent), the
+ * friction ratios and the block: what LAZY ROWS defers. A pure function of the step's
+ * start, so it gives the same values whenever it runs. Normal rows whose every r x n is
+ * 0 (normal_linear: two balls, a ball on the ground) have no angular part, exactly as
+ * without rotation: t = q = 0 and K = 1/mA + 1/mB either way; the common case, both
+ * rows turning, gets a copy of the loop of its own. */
+PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
+{
+    const pg_world *w = ctx->world;
+    const pg_body *A = c->a == ctx->dummy ? &immovable : &w->bodies[c->a];
+    const pg_body *B = c->b == ctx->dummy ? &immovable : &w->bodies[c->b];
+    if (ctx->rotation && !c->normal_linear) prepare_point_rows(ctx, c, A, B, 1, 1);
+    else prepare_point_rows(ctx, c, A, B, 0, ctx->rotation);
     setup_block(c);
     c->rows_ready = 1;
 }
