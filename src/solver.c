@@ -1282,15 +1282,15 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
 
 /* Constraint c for contact i (which has points and a moving side): anchors, lever arms and
  * impulses from the state at the step's start, and the rows' coefficients when a point
- * holds an impulse (LAZY ROWS). */
-static void prepare_constraint(const step_context *ctx, solver_body *bodies, constraint *c, uint32_t i)
+ * holds an impulse (LAZY ROWS). activeA, activeB: pg__body_is_active of its two bodies,
+ * which prepare_constraints has found. */
+static void prepare_constraint(const step_context *ctx, solver_body *bodies, constraint *c, uint32_t i, int activeA, int activeB)
 {
     const pg_world *w = ctx->world;
     const uint32_t dummy = ctx->dummy, effects = ctx->effects;
     const int rotation = ctx->rotation;
     pg_contact *ct = &w->contacts[i];
     const pg_body *A = &w->bodies[ct->body_a], *B = &w->bodies[ct->body_b];
-    int activeA = pg__body_is_active(A), activeB = pg__body_is_active(B);
     int32_t k;
     int held = 0; /* a point has an impulse to warm start with */
     int turnA, turnB;
@@ -1402,9 +1402,13 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
         if (ct->point_count == 0 || (!activeA && !activeB)) continue;
         /* a side that cannot move in this step: static, kinematic or asleep */
         if (!activeA || !activeB || A->inv_mass == 0 || B->inv_mass == 0) later[n_later++] = i;
-        else prepare_constraint(ctx, bodies, &cons[n_cons++], i);
+        else prepare_constraint(ctx, bodies, &cons[n_cons++], i, 1, 1);
     }
-    for (i = 0; i < n_later; ++i) prepare_constraint(ctx, bodies, &cons[n_cons++], later[i]);
+    for (i = 0; i < n_later; ++i) {
+        const pg_contact *ct = &w->contacts[later[i]];
+        prepare_constraint(ctx, bodies, &cons[n_cons++], later[i], pg__body_is_active(&w->bodies[ct->body_a]),
+                           pg__body_is_active(&w->bodies[ct->body_b]));
+    }
     return n_cons;
 }
 
