@@ -615,16 +615,21 @@ PG__INLINE_ROW void prepare_point_rows(const step_context *ctx, constraint *c, c
  * start, so it gives the same values whenever it runs. Normal rows whose every r x n is
  * 0 (normal_linear: two balls, a ball on the ground) have no angular part, exactly as
  * without rotation: t = q = 0 and K = 1/mA + 1/mB either way; the common case, both
- * rows turning, gets a copy of the loop of its own. */
-PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
+ * rows turning, gets a copy of the loop of its own. A and B are c's bodies (immovable for
+ * the dummy): prepare_constraint has them at hand, prepare_rows (a pass that finds the
+ * rows first needed) looks them up. */
+PG__NOINLINE void prepare_rows_of(const step_context *ctx, constraint *c, const pg_body *A, const pg_body *B)
 {
-    const pg_world *w = ctx->world;
-    const pg_body *A = c->a == ctx->dummy ? &immovable : &w->bodies[c->a];
-    const pg_body *B = c->b == ctx->dummy ? &immovable : &w->bodies[c->b];
     if (ctx->rotation && !c->normal_linear) prepare_point_rows(ctx, c, A, B, 1, 1);
     else prepare_point_rows(ctx, c, A, B, 0, ctx->rotation);
     setup_block(c);
     c->rows_ready = 1;
+}
+
+PG__NOINLINE void prepare_rows(const step_context *ctx, constraint *c)
+{
+    const pg_world *w = ctx->world;
+    prepare_rows_of(ctx, c, c->a == ctx->dummy ? &immovable : &w->bodies[c->a], c->b == ctx->dummy ? &immovable : &w->bodies[c->b]);
 }
 
 /* ---- the row kernel ------------------------------------------------------------------
@@ -1382,7 +1387,7 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
     }
     c->rows_ready = 0;
     c->block = 0; /* restitution reads it: a constraint whose rows never get set never pushed */
-    if (held) prepare_rows(ctx, c);
+    if (held) prepare_rows_of(ctx, c, A, B);
 }
 
 /* The step's constraints, one per contact with points and a moving side: first those
