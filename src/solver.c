@@ -471,8 +471,8 @@ PG__NOINLINE denominator row_coefficients_scaled(const pg_body *A, const pg_body
  * 0.025 m and density 0.1 (invI = 1.6e7) at a lever arm of 1.44 m, which a massless
  * segment on the same body provides (the envelope allows 50 m). Such a row is computed
  * with every term scaled down (row_coefficients_scaled); a row whose K fits int64 is
- * computed as before. Forced inline into prepare_rows, its only caller: gcc left it out
- * of line, and writing its six results through pointers cost 1.8 % of the awake
+ * computed as before. Forced inline into prepare_point_rows, its only caller: gcc left it
+ * out of line, and writing its six results through pointers cost 1.8 % of the awake
  * pyramid's instructions (callgrind).
  * The four products invI c and t c are mul_q16's; where both sides are ordinary (the
  * offset values OR-ed are below the limits exactly when each is) they are plain int64
@@ -487,8 +487,9 @@ PG__INLINE_ROW denominator row_coefficients(const pg_body *A, const pg_body *B, 
     if (rotation) {
         int64_t qA, qB;
         /* the common case in one test: inverse inertias below 2^46 (a ball of radius 0.25 m
-         * and density 1 has 2^45.4) and |c| <= 2^16 (1 m), so |t| < 2^46 and |q| < 2^46:
-         * every product fits and K too, exactly as mul_q16 computes them */
+         * and density 1 has 2^45.4) and |c| <= 2^16 (1 m), so |invI c| < 2^62, |t| <= 2^46,
+         * |t c| <= 2^62 and 0 <= q <= 2^46: every product fits and K too, and each is
+         * exactly what mul_q16 returns */
         uint64_t rc = ((uint64_t)(int64_t)cA + (UINT64_C(1) << 16)) | ((uint64_t)(int64_t)cB + (UINT64_C(1) << 16));
         if ((((uint64_t)A->inv_inertia | (uint64_t)B->inv_inertia) >> 46 | rc >> 17) == 0) {
             tA = pg__round_shift64(A->inv_inertia * cA, 16); /* invI (r x d): Q38 per metre */
