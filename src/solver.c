@@ -743,6 +743,12 @@ static inline void anchor_now(const solver_body *b, pg_vec2 r, int round, int64_
 
 static inline int64_t clamp_lambda(int64_t acc, int64_t lo, int64_t hi) { return acc < lo ? lo : acc > hi ? hi : acc; }
 
+/* pg__round_shift64 of an x whose sign is known, for products whose factors' signs the
+ * solver's invariants fix: its sign term x >> 63 is then the constant 0 (x >= 0) or -1
+ * (x <= 0), and the same bits come from one addition. */
+static inline int64_t round_shift_nonneg(int64_t x, int n) { return (x + ((int64_t)1 << (n - 1))) >> n; }
+static inline int64_t round_shift_nonpos(int64_t x, int n) { return (x + ((int64_t)1 << (n - 1)) - 1) >> n; }
+
 /* A point's part of its friction row's bound, f (Kt/Kn) lambda_n in Q32 (solve_friction). */
 static inline int64_t friction_bound(const constraint_point *p) { return (int64_t)p->friction_ratio * p->normal_impulse; }
 
@@ -752,7 +758,8 @@ static inline int64_t friction_bound(const constraint_point *p) { return (int64_
  * 2^31 2^29, so the sum of two fits int64 and is rounded once. */
 PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point *p, pg_dir t, int64_t bound)
 {
-    int64_t max_f = pg__round_shift64(bound, 16), acc;
+    /* bound >= 0: f is 0..10 (shape.c and restoring check it), Kt/Kn >= 0, lambda_n >= 0 */
+    int64_t max_f = round_shift_nonneg(bound, 16), acc;
     if (max_f > LAMBDA_MAX) max_f = LAMBDA_MAX;
     if (max_f == 0) {
         /* an unloaded contact: the bound is 0 whatever the sliding speed */
@@ -847,7 +854,8 @@ PG__INLINE_ROW int64_t normal_target(const step_context *ctx, const softness *so
     if (s > 0) return rel + s * ctx->n;
     if (use_bias) {
         /* the bias, capped at push_max, less what goes to the pseudo velocities (DEEP PUSH) */
-        int64_t bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
+        /* s <= 0 here and bias_rate >= 0 (contact_hertz > 0, the damping ratio >= 0) */
+        int64_t bias = round_shift_nonpos((int64_t)soft->bias_rate * s, 16);
         if (bias < -ctx->push_max) bias = -ctx->push_max;
         *is_soft = 1;
         return rel + bias - p->deep_push;
@@ -880,7 +888,8 @@ PG__INLINE_ROW void set_push(const step_context *ctx, const softness *soft, cons
 PG__INLINE_ROW int64_t normal_update(const softness *soft, const constraint_point *p, int64_t y, int is_soft)
 {
     if (!is_soft) return (int64_t)p->normal_impulse - y;
-    return (int64_t)p->normal_impulse - mass_scale_times(soft->mass_scale, y) - pg__round_shift64((int64_t)soft->impulse_scale * p->normal_impulse, 30);
+    /* impulse_scale > 0 and lambda >= 0 (every store clamps it to [0, LAMBDA_MAX]) */
+    return (int64_t)p->normal_impulse - mass_scale_times(soft->mass_scale, y) - round_shift_nonneg((int64_t)soft->impulse_scale * p->normal_impulse, 30);
 }
 
 /* Store a normal row's new lambda acc (clamped to [0, LAMBDA_MAX]) and apply the change. */
@@ -1003,9 +1012,6 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     velocity va = load_velocity(A), vb = load_velocity(B);
     const softness *soft = c->soft_static ? &ctx->soft_static : &ctx->soft;
-    pg_dir t;
-    t.x = c->n.y;
-    t.y = -c->n.x;
     if (c->count < 2) {
         constraint_point *p = &c->p[0];
         int64_t s = normal_separation(c, A, B, p, use_bias), rel = normal_speed(c, &va, &vb, p);
@@ -1057,6 +1063,9 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, so
         /* one row: a single point's, or a face contact's central row (CENTRAL FRICTION:
          * with friction on, every two-point manifold has one), bounded by both points */
         int64_t bound = friction_bound(&c->p[0]);
+        pg_dir t;
+        t.x = c->n.y;
+        t.y = -c->n.x;
         if (c->central_friction) bound += friction_bound(&c->p[1]);
         solve_friction(&va, &vb, &c->p[0], t, bound);
     }
