@@ -219,7 +219,7 @@ typedef struct constraint {
     uint32_t contact;
     pg_dir n;
     int32_t count;
-    int32_t soft_static;     /* one side cannot move: stiffer softness */
+    int32_t soft_static;     /* one side cannot move: stiffer softness; 0 or 1, an index */
     int32_t round_a, round_b;/* a circle centred on its body's centre of mass: its surface
                                 looks the same however it turns, and its normal passes
                                 through the centre (no torque) */
@@ -1007,11 +1007,11 @@ PG__INLINE_ROW int row_idle(const step_context *ctx, const softness *soft, const
     return normal_target(ctx, soft, p, s, rel, use_bias, &is_soft) >= 0;
 }
 
-PG__INLINE_PASS void solve_constraint(const step_context *ctx, constraint *c, solver_body *bodies, int use_bias, int order)
+PG__INLINE_PASS void solve_constraint(const step_context *ctx, const softness *softs, constraint *c, solver_body *bodies, int use_bias, int order)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     velocity va = load_velocity(A), vb = load_velocity(B);
-    const softness *soft = c->soft_static ? &ctx->soft_static : &ctx->soft;
+    const softness *soft = &softs[c->soft_static];
     if (c->count < 2) {
         constraint_point *p = &c->p[0];
         int64_t s = normal_separation(c, A, B, p, use_bias), rel = normal_speed(c, &va, &vb, p);
@@ -1587,11 +1587,15 @@ void pg__solve(pg_world *w)
 
     for (sub = 0; sub < w->def.substeps; ++sub) {
         int order = (int)(sub & 1u);
+        softness softs[2]; /* indexed by a constraint's soft_static (0 or 1): choosing between
+                              two addresses in the context by the flag was done again at each use */
+        softs[0] = ctx.soft;
+        softs[1] = ctx.soft_static;
         ctx.sub = sub;
         integrate_velocities(w, bodies, active, n_active, &ctx, sub, rotation, sub > 0);
         if (sub == 0)
             for (i = 0; i < n_cons; ++i) warm_start(&cons[i], bodies);
-        for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, &cons[i], bodies, 1, order);
+        for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, softs, &cons[i], bodies, 1, order);
         if (deep) {
             uint32_t n_list = list_deep_push(&ctx, cons, n_cons, bodies, deep_list);
             int it;
@@ -1614,7 +1618,7 @@ void pg__solve(pg_world *w)
                 if (sb->turns_anchors) sb->dq = pg_rot_from_angle(sb->a - sb->a0); /* a ball's is never read */
             }
         }
-        for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, &cons[i], bodies, 0, order);
+        for (i = 0; i < n_cons; ++i) solve_constraint(&ctx, softs, &cons[i], bodies, 0, order);
     }
     if ((effects & PG_EFFECT_RESTITUTION) != 0)
         for (i = 0; i < n_cons; ++i) restitution(&cons[i], bodies, w->def.restitution_threshold);
