@@ -1040,7 +1040,7 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, const softness *s
         lin = linear_speed(&va, &vb, c->n);
         rel0 = lin + angular_speed(&va, &vb, p0->cnA, p0->cnB);
         rel1 = lin + angular_speed(&va, &vb, p1->cnA, p1->cnB);
-        if (!c->rows_ready) {
+        if (!c->block && !c->rows_ready) { /* a block's rows are ready: one test on the common path */
             if (row_idle(ctx, soft, p0, s0, rel0, use_bias) && row_idle(ctx, soft, p1, s1, rel1, use_bias)) return;
             prepare_rows(ctx, c);
         }
