@@ -1183,12 +1183,27 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
     B = &bodies[c->b];
     va = load_velocity(A);
     vb = load_velocity(B);
-    for (k = 0; k < c->count; ++k) {
-        constraint_point *p = &c->p[k];
-        if (p->normal_impulse == 0 && p->tangent_impulse == 0) continue; /* nothing to apply */
-        if (c->normal_linear) apply_linear(&va, &vb, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
-        else apply_row(&va, &vb, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
-        if (p->tangent_impulse != 0) apply_row(&va, &vb, p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+    if (c->count == 2) {
+        /* a manifold's three rows at once: its two normal rows and p[0]'s tangent row (p[1]
+         * holds no tangent impulse: it is the central row's, CENTRAL FRICTION, or friction
+         * is off), each component changed by the sum of the same roundings (a row whose
+         * impulse is 0, or a side's g = 0 where normal_linear, adds round(0) = 0) */
+        const constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
+        int64_t n0 = p0->normal_impulse, n1 = p1->normal_impulse, t0 = p0->tangent_impulse;
+        va.x -= pg__round_shift64(n0 * p0->lnA_x, 30) + pg__round_shift64(n1 * p1->lnA_x, 30) + pg__round_shift64(t0 * p0->ltA_x, 30);
+        va.y -= pg__round_shift64(n0 * p0->lnA_y, 30) + pg__round_shift64(n1 * p1->lnA_y, 30) + pg__round_shift64(t0 * p0->ltA_y, 30);
+        va.w -= pg__round_shift64(n0 * p0->gnA, 24) + pg__round_shift64(n1 * p1->gnA, 24) + pg__round_shift64(t0 * p0->gtA, 24);
+        vb.x += pg__round_shift64(n0 * p0->lnB_x, 30) + pg__round_shift64(n1 * p1->lnB_x, 30) + pg__round_shift64(t0 * p0->ltB_x, 30);
+        vb.y += pg__round_shift64(n0 * p0->lnB_y, 30) + pg__round_shift64(n1 * p1->lnB_y, 30) + pg__round_shift64(t0 * p0->ltB_y, 30);
+        vb.w += pg__round_shift64(n0 * p0->gnB, 24) + pg__round_shift64(n1 * p1->gnB, 24) + pg__round_shift64(t0 * p0->gtB, 24);
+    } else {
+        for (k = 0; k < c->count; ++k) {
+            constraint_point *p = &c->p[k];
+            if (p->normal_impulse == 0 && p->tangent_impulse == 0) continue; /* nothing to apply */
+            if (c->normal_linear) apply_linear(&va, &vb, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
+            else apply_row(&va, &vb, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+            if (p->tangent_impulse != 0) apply_row(&va, &vb, p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+        }
     }
     store_velocity(A, &va);
     store_velocity(B, &vb);
