@@ -190,13 +190,15 @@ typedef struct solver_body {
     pg_fix w_pre;         /* contacts changed since is the next one's (WARM START) */
 } solver_body;
 
+/* One row's coefficients: the linear ones kA d, kB d (Q2.30) and the angular ones gA, gB
+ * (Q8.24 1/m). */
+typedef struct row_coeffs { int32_t lA_x, lA_y, lB_x, lB_y, gA, gB; } row_coeffs;
+
 typedef struct constraint_point {
     pg_vec2 rA, rB;
     pg_fix adjusted_separation;
     pg_fix cnA, cnB, ctA, ctB;       /* r x n, r x t: Q16.16 m */
-    int32_t lnA_x, lnA_y, lnB_x, lnB_y; /* kA n, kB n: Q2.30 */
-    int32_t ltA_x, ltA_y, ltB_x, ltB_y;
-    int32_t gnA, gnB, gtA, gtB;      /* Q8.24 1/m */
+    row_coeffs nrow, trow;           /* the normal and the tangent row */
     pg_fix friction_ratio;           /* f Kt / Kn */
     pg_fix relative_velocity;        /* normal, just before the point first pushes in this
                                         step (APPROACH); read only once it has pushed */
@@ -415,26 +417,17 @@ static inline int64_t mul_q16(int64_t a, pg_fix c)
     return (a < 0) != (c < 0) ? -(int64_t)r : (int64_t)r;
 }
 
-/* One row's coefficients into point p: the linear ones kA d, kB d (Q2.30) and the angular
- * ones gA, gB (Q8.24) of its normal row, or of its tangent row. */
+/* One row's coefficients into point p: its normal row's, or its tangent row's. */
 static inline void store_row(constraint_point *p, int tangent, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y, int32_t gA,
                              int32_t gB)
 {
-    if (tangent) {
-        p->ltA_x = lA_x;
-        p->ltA_y = lA_y;
-        p->ltB_x = lB_x;
-        p->ltB_y = lB_y;
-        p->gtA = gA;
-        p->gtB = gB;
-    } else {
-        p->lnA_x = lA_x;
-        p->lnA_y = lA_y;
-        p->lnB_x = lB_x;
-        p->lnB_y = lB_y;
-        p->gnA = gA;
-        p->gnB = gB;
-    }
+    row_coeffs *r = tangent ? &p->trow : &p->nrow;
+    r->lA_x = lA_x;
+    r->lA_y = lA_y;
+    r->lB_x = lB_x;
+    r->lB_y = lB_y;
+    r->gA = gA;
+    r->gB = gB;
 }
 
 /* row_coefficients for a row whose K does not fit int64: K, tA and tB scaled by 2^-s.
@@ -528,8 +521,8 @@ PG__INLINE_ROW denominator row_coefficients(const pg_body *A, const pg_body *B, 
  * n . (kA + kB) n and the angular part (r x n)_p g_q on each side. */
 static int64_t coupling(pg_dir n, const constraint_point *p, const constraint_point *q)
 {
-    int64_t lin = pg__round_shift64((int64_t)n.x * ((int64_t)q->lnA_x + q->lnB_x) + (int64_t)n.y * ((int64_t)q->lnA_y + q->lnB_y), 30);
-    return lin + pg__round_shift64((int64_t)p->cnA * q->gnA + (int64_t)p->cnB * q->gnB, 10);
+    int64_t lin = pg__round_shift64((int64_t)n.x * ((int64_t)q->nrow.lA_x + q->nrow.lB_x) + (int64_t)n.y * ((int64_t)q->nrow.lA_y + q->nrow.lB_y), 30);
+    return lin + pg__round_shift64((int64_t)p->cnA * q->nrow.gA + (int64_t)p->cnB * q->nrow.gB, 10);
 }
 
 /* Whether the two normal rows of c are solved together, and their coupling. Only when
@@ -606,7 +599,7 @@ PG__INLINE_ROW void prepare_point_rows(const step_context *ctx, constraint *c, c
         /* with CENTRAL FRICTION, p[1] has no tangent row of its own: its ratio turns its
          * normal impulse into the bound of p[0]'s row, Kt of that row over its own Kn */
         if (friction && (k == 0 || !c->central_friction)) dt = row_coefficients(A, B, p->ctA, p->ctB, t, tangent_turns, p, 1);
-        else p->ltA_x = p->ltA_y = p->ltB_x = p->ltB_y = p->gtA = p->gtB = 0;
+        else p->trow.lA_x = p->trow.lA_y = p->trow.lB_x = p->trow.lB_y = p->trow.gA = p->trow.gB = 0;
         p->friction_ratio = friction ? pg_fix_mul(mu, k_ratio(dt, dn)) : 0;
     }
 }
@@ -769,7 +762,7 @@ PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point 
         acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(va, vb, t, p->ctA, p->ctB), -max_f, max_f);
     }
     if (acc == p->tangent_impulse) return; /* held at its bound: nothing changes */
-    apply_row(va, vb, acc - p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+    apply_row(va, vb, acc - p->tangent_impulse, p->trow.lA_x, p->trow.lA_y, p->trow.lB_x, p->trow.lB_y, p->trow.gA, p->trow.gB);
     p->tangent_impulse = (pg_fix)acc;
 }
 
@@ -898,8 +891,8 @@ PG__INLINE_ROW void normal_apply(const constraint *c, velocity *va, velocity *vb
     acc = clamp_lambda(acc, 0, LAMBDA_MAX);
     if (acc > p->max_normal_impulse) p->max_normal_impulse = (pg_fix)acc;
     if (acc == p->normal_impulse) return; /* nothing held, nothing to hold: open gaps */
-    if (c->normal_linear) apply_linear(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
-    else apply_row(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+    if (c->normal_linear) apply_linear(va, vb, acc - p->normal_impulse, p->nrow.lA_x, p->nrow.lA_y, p->nrow.lB_x, p->nrow.lB_y);
+    else apply_row(va, vb, acc - p->normal_impulse, p->nrow.lA_x, p->nrow.lA_y, p->nrow.lB_x, p->nrow.lB_y, p->nrow.gA, p->nrow.gB);
     p->normal_impulse = (pg_fix)acc;
 }
 
@@ -920,12 +913,12 @@ PG__INLINE_ROW void normal_apply_pair(velocity *va, velocity *vb, constraint_poi
     d1 = acc1 - p1->normal_impulse;
     p0->normal_impulse = (pg_fix)acc0;
     p1->normal_impulse = (pg_fix)acc1;
-    va->x -= pg__round_shift64(d0 * p0->lnA_x, 30) + pg__round_shift64(d1 * p1->lnA_x, 30);
-    va->y -= pg__round_shift64(d0 * p0->lnA_y, 30) + pg__round_shift64(d1 * p1->lnA_y, 30);
-    va->w -= pg__round_shift64(d0 * p0->gnA, 24) + pg__round_shift64(d1 * p1->gnA, 24);
-    vb->x += pg__round_shift64(d0 * p0->lnB_x, 30) + pg__round_shift64(d1 * p1->lnB_x, 30);
-    vb->y += pg__round_shift64(d0 * p0->lnB_y, 30) + pg__round_shift64(d1 * p1->lnB_y, 30);
-    vb->w += pg__round_shift64(d0 * p0->gnB, 24) + pg__round_shift64(d1 * p1->gnB, 24);
+    va->x -= pg__round_shift64(d0 * p0->nrow.lA_x, 30) + pg__round_shift64(d1 * p1->nrow.lA_x, 30);
+    va->y -= pg__round_shift64(d0 * p0->nrow.lA_y, 30) + pg__round_shift64(d1 * p1->nrow.lA_y, 30);
+    va->w -= pg__round_shift64(d0 * p0->nrow.gA, 24) + pg__round_shift64(d1 * p1->nrow.gA, 24);
+    vb->x += pg__round_shift64(d0 * p0->nrow.lB_x, 30) + pg__round_shift64(d1 * p1->nrow.lB_x, 30);
+    vb->y += pg__round_shift64(d0 * p0->nrow.lB_y, 30) + pg__round_shift64(d1 * p1->nrow.lB_y, 30);
+    vb->w += pg__round_shift64(d0 * p0->nrow.gB, 24) + pg__round_shift64(d1 * p1->nrow.gB, 24);
 }
 
 /* The approach speed of a point that first pushes now, at relative normal speed rel:
@@ -1102,7 +1095,7 @@ PG__INLINE_ROW void deep_row(velocity *pa, velocity *pb, constraint_point *p, in
     int64_t lambda = clamp_lambda(acc, 0, LAMBDA_MAX) - p->deep_impulse;
     if (lambda == 0) return;
     p->deep_impulse = (pg_fix)(p->deep_impulse + lambda);
-    apply_linear(pa, pb, lambda, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
+    apply_linear(pa, pb, lambda, p->nrow.lA_x, p->nrow.lA_y, p->nrow.lB_x, p->nrow.lB_y);
 }
 
 /* One sweep of the pseudo rows over the constraints, forwards or backwards; DEEP_PUSH_SWEEPS
@@ -1167,7 +1160,7 @@ PG__NOINLINE void warm_start_deep_push(constraint *cons, uint32_t n_cons, solver
         pa = load_pseudo(A);
         pb = load_pseudo(B);
         for (k = 0; k < c->count; ++k)
-            if (c->p[k].deep_impulse != 0) apply_linear(&pa, &pb, c->p[k].deep_impulse, c->p[k].lnA_x, c->p[k].lnA_y, c->p[k].lnB_x, c->p[k].lnB_y);
+            if (c->p[k].deep_impulse != 0) apply_linear(&pa, &pb, c->p[k].deep_impulse, c->p[k].nrow.lA_x, c->p[k].nrow.lA_y, c->p[k].nrow.lB_x, c->p[k].nrow.lB_y);
         store_pseudo(A, &pa);
         store_pseudo(B, &pb);
     }
@@ -1190,19 +1183,19 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
          * impulse is 0, or a side's g = 0 where normal_linear, adds round(0) = 0) */
         const constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
         int64_t n0 = p0->normal_impulse, n1 = p1->normal_impulse, t0 = p0->tangent_impulse;
-        va.x -= pg__round_shift64(n0 * p0->lnA_x, 30) + pg__round_shift64(n1 * p1->lnA_x, 30) + pg__round_shift64(t0 * p0->ltA_x, 30);
-        va.y -= pg__round_shift64(n0 * p0->lnA_y, 30) + pg__round_shift64(n1 * p1->lnA_y, 30) + pg__round_shift64(t0 * p0->ltA_y, 30);
-        va.w -= pg__round_shift64(n0 * p0->gnA, 24) + pg__round_shift64(n1 * p1->gnA, 24) + pg__round_shift64(t0 * p0->gtA, 24);
-        vb.x += pg__round_shift64(n0 * p0->lnB_x, 30) + pg__round_shift64(n1 * p1->lnB_x, 30) + pg__round_shift64(t0 * p0->ltB_x, 30);
-        vb.y += pg__round_shift64(n0 * p0->lnB_y, 30) + pg__round_shift64(n1 * p1->lnB_y, 30) + pg__round_shift64(t0 * p0->ltB_y, 30);
-        vb.w += pg__round_shift64(n0 * p0->gnB, 24) + pg__round_shift64(n1 * p1->gnB, 24) + pg__round_shift64(t0 * p0->gtB, 24);
+        va.x -= pg__round_shift64(n0 * p0->nrow.lA_x, 30) + pg__round_shift64(n1 * p1->nrow.lA_x, 30) + pg__round_shift64(t0 * p0->trow.lA_x, 30);
+        va.y -= pg__round_shift64(n0 * p0->nrow.lA_y, 30) + pg__round_shift64(n1 * p1->nrow.lA_y, 30) + pg__round_shift64(t0 * p0->trow.lA_y, 30);
+        va.w -= pg__round_shift64(n0 * p0->nrow.gA, 24) + pg__round_shift64(n1 * p1->nrow.gA, 24) + pg__round_shift64(t0 * p0->trow.gA, 24);
+        vb.x += pg__round_shift64(n0 * p0->nrow.lB_x, 30) + pg__round_shift64(n1 * p1->nrow.lB_x, 30) + pg__round_shift64(t0 * p0->trow.lB_x, 30);
+        vb.y += pg__round_shift64(n0 * p0->nrow.lB_y, 30) + pg__round_shift64(n1 * p1->nrow.lB_y, 30) + pg__round_shift64(t0 * p0->trow.lB_y, 30);
+        vb.w += pg__round_shift64(n0 * p0->nrow.gB, 24) + pg__round_shift64(n1 * p1->nrow.gB, 24) + pg__round_shift64(t0 * p0->trow.gB, 24);
     } else {
         for (k = 0; k < c->count; ++k) {
             constraint_point *p = &c->p[k];
             if (p->normal_impulse == 0 && p->tangent_impulse == 0) continue; /* nothing to apply */
-            if (c->normal_linear) apply_linear(&va, &vb, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y);
-            else apply_row(&va, &vb, p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
-            if (p->tangent_impulse != 0) apply_row(&va, &vb, p->tangent_impulse, p->ltA_x, p->ltA_y, p->ltB_x, p->ltB_y, p->gtA, p->gtB);
+            if (c->normal_linear) apply_linear(&va, &vb, p->normal_impulse, p->nrow.lA_x, p->nrow.lA_y, p->nrow.lB_x, p->nrow.lB_y);
+            else apply_row(&va, &vb, p->normal_impulse, p->nrow.lA_x, p->nrow.lA_y, p->nrow.lB_x, p->nrow.lB_y, p->nrow.gA, p->nrow.gB);
+            if (p->tangent_impulse != 0) apply_row(&va, &vb, p->tangent_impulse, p->trow.lA_x, p->trow.lA_y, p->trow.lB_x, p->trow.lB_y, p->trow.gA, p->trow.gB);
         }
     }
     store_velocity(A, &va);
@@ -1223,7 +1216,7 @@ static inline int64_t rebound_target(const constraint *c, const velocity *va, co
 static inline void rebound_apply(velocity *va, velocity *vb, constraint_point *p, int64_t acc)
 {
     acc = clamp_lambda(acc, 0, LAMBDA_MAX);
-    apply_row(va, vb, acc - p->normal_impulse, p->lnA_x, p->lnA_y, p->lnB_x, p->lnB_y, p->gnA, p->gnB);
+    apply_row(va, vb, acc - p->normal_impulse, p->nrow.lA_x, p->nrow.lA_y, p->nrow.lB_x, p->nrow.lB_y, p->nrow.gA, p->nrow.gB);
     p->normal_impulse = (pg_fix)acc;
 }
 
