@@ -41,9 +41,11 @@ static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact
          * in one step, so a fast body gets a contact before it reaches the surface and
          * the solver stops it there instead of letting it tunnel. */
         const pg_body *a = &w->bodies[w->shapes[sa].body], *b = &w->bodies[w->shapes[sb].body];
-        int64_t reach = ((int64_t)pg_fix_abs(a->v.x) + pg_fix_abs(a->v.y) + pg_fix_abs(b->v.x) + pg_fix_abs(b->v.y)) /
-                        (int64_t)w->def.step_hz;
-        if (reach > PG_SPECULATIVE_DISTANCE) speculative = pg__sat64(reach);
+        int64_t sum = (int64_t)pg_fix_abs(a->v.x) + pg_fix_abs(a->v.y) + pg_fix_abs(b->v.x) + pg_fix_abs(b->v.y);
+        int64_t hz = (int64_t)w->def.step_hz;
+        /* reach = sum / hz (sum >= 0: the quotient is its floor) exceeds the distance
+         * exactly when sum >= (distance + 1) hz; a resting pair skips the division */
+        if (sum >= ((int64_t)PG_SPECULATIVE_DISTANCE + 1) * hz) speculative = pg__sat64(sum / hz);
     }
     pg_collide(&w->world_geoms[sa], &w->world_geoms[sb], speculative, &m);
     c->shape_a = sa;
