@@ -139,10 +139,24 @@
  * (test_pinched_body_is_not_pressed_through: 0.83 half sizes at worst where it was 1.74,
  * and the same against a wall without gravity).
  *
+ * ROUNDING: in this file a product shifted down rounds to nearest with ties toward
+ * +infinity, (x + 2^(n-1)) >> n (row_round), where the rest of pogon rounds ties away from
+ * zero (fixed.h). The two rules differ only at an exact tie of a negative value (the bits
+ * shifted out exactly one half), by one unit. Ties toward +infinity is two operations
+ * where ties away from zero takes four, and the solver's roundings were a fifth of the
+ * awake step's instructions. A quantity with a fast int64 path and a 128-bit one
+ * (mass_scale_times, mul_q16) rounds the same way on both. The integration (velocities
+ * by gravity and forces, positions and angles by velocities, damping) keeps fixed.h's
+ * ties away from zero, so a body that touches nothing moves as pg_fix arithmetic says;
+ * so do what goes through wide.h alone (forces and torques over the mass, the approach
+ * time, rows beyond int64) and the quotient that splits the central friction. None of
+ * them is on a row's path.
+ *
  * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
- * 1, odd ones 1 then 0); the block is the same in either order; and all rounding is
- * symmetric in sign, so a symmetric column gets no sideways push from the solver's
- * order.
+ * 1, odd ones 1 then 0); the block is the same in either order; and a mirrored product
+ * rounds to the mirrored value except at an exact negative tie, so a symmetric column
+ * gets no sideways push from the solver's order (the 20-box column of test_stacking
+ * keeps every box at x = 0 exactly for all of its 60 s: its printed max |x|).
  */
 #include "wide.h"
 #include "intmath.h"
@@ -167,6 +181,10 @@
 #else
 #define PG__NOINLINE static
 #endif
+
+/* The rows' rounding (ROUNDING): round(x / 2^n), ties toward +infinity, 1 <= n <= 62.
+ * Arithmetic right shift of a negative value is pinned by fixed.h's compile-time check. */
+static inline int64_t row_round(int64_t x, int n) { return (x + ((int64_t)1 << (n - 1))) >> n; }
 
 typedef struct solver_body {
     pg_vec2 v;
@@ -281,10 +299,10 @@ size_t pg__solver_scratch_bytes(const pg_world_def *def)
 static softness make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
 {
     softness s;
-    int64_t omega = pg__round_shift64((int64_t)hertz * PG_FIX_TWO_PI, 16); /* Q16 */
+    int64_t omega = row_round((int64_t)hertz * PG_FIX_TWO_PI, 16); /* Q16 */
     int64_t h_omega = (omega * 2 + (int64_t)n_per_second) / (2 * (int64_t)n_per_second);
     int64_t a1 = 2 * (int64_t)zeta + h_omega;
-    int64_t a2 = pg__round_shift64(h_omega * a1, 16);
+    int64_t a2 = row_round(h_omega * a1, 16);
     s.bias_rate = a1 > 0 ? (pg_fix)((omega * 65536 + a1 / 2) / a1) : 0;
     s.mass_scale = (int32_t)((a2 * (INT64_C(1) << 30) + (65536 + a2) / 2) / (65536 + a2));
     s.impulse_scale = (int32_t)(((INT64_C(1) << 46) + (65536 + a2) / 2) / (65536 + a2));
@@ -314,7 +332,7 @@ static denominator make_denominator(int64_t K)
     denominator d;
     int64_t K31;
     d.shift = pg__bit_length64((uint64_t)K) - 31;
-    if (d.shift > 0) K31 = pg__round_shift64(K, d.shift);
+    if (d.shift > 0) K31 = row_round(K, d.shift);
     else if (d.shift < 0) K31 = K * ((int64_t)1 << -d.shift);
     else K31 = K;
     d.inv = K31 > 0 ? (int64_t)(((UINT64_C(1) << 62) + (uint64_t)K31 / 2u) / (uint64_t)K31) : 0;
@@ -325,25 +343,25 @@ static denominator make_denominator(int64_t K)
  * envelope: see the bounds at each caller). */
 static int32_t ratio_q(int64_t num, denominator d, int q)
 {
-    int64_t n = d.shift >= 0 ? (d.shift > 0 ? pg__round_shift64(num, d.shift) : num) : num * ((int64_t)1 << -d.shift);
+    int64_t n = d.shift >= 0 ? (d.shift > 0 ? row_round(num, d.shift) : num) : num * ((int64_t)1 << -d.shift);
     int64_t r;
     if (q == 30) {
-        r = pg__round_shift64(n * d.inv, 32); /* |n| <= K31 < 2^31 here: kA, kB <= 1 */
+        r = row_round(n * d.inv, 32); /* |n| <= K31 < 2^31 here: kA, kB <= 1 */
     } else {
-        r = pg__round_shift64(n * (d.inv >> 8), 54 - q); /* |n| < 2^36, inv >> 8 <= 2^24 */
+        r = row_round(n * (d.inv >> 8), 54 - q); /* |n| < 2^36, inv >> 8 <= 2^24 */
     }
     return (int32_t)(r > INT32_MAX ? INT32_MAX : r < -INT32_MAX ? -INT32_MAX : r);
 }
 
 /* A row's denominator (make_denominator's, for K >= 0) with what its ratios need, made
  * without a branch on the sign of the shift. ratio_q's n, num scaled by 2^-shift, is
- * (num + half + (sign & neg)) >> s, pg__round_shift64's rounding, for shift > 0; for
- * shift <= 0 it is num 2^-shift, exact, so there the factor joins the reciprocal instead:
+ * (num + half) >> s, row_round's rounding, for shift > 0; for shift <= 0 it is
+ * num 2^-shift, exact, so there the factor joins the reciprocal instead:
  * n inv = num (inv 2^-shift), the same product. With s = max(shift, 0) and l = s - shift
- * = max(-shift, 0) both are one form: half = 2^s / 2, neg = -1 or 0, inv30 = inv 2^l and
- * inv24 = (inv >> 8) 2^l. K31 is made the same way (K >= 0: no sign term). l <= 30 for
+ * = max(-shift, 0) both are one form: half = 2^s / 2 (0 for s = 0), inv30 = inv 2^l and
+ * inv24 = (inv >> 8) 2^l. K31 is made the same way. l <= 30 for
  * K >= 1, so inv 2^l <= 2^62 (K = 0: l = 31 and inv = 0); (inv >> 8) 2^l <= 2^54. */
-typedef struct row_den { denominator d; int64_t half, neg, inv30, inv24; int s; } row_den;
+typedef struct row_den { denominator d; int64_t half, inv30, inv24; int s; } row_den;
 
 static inline row_den make_row_denominator(int64_t K)
 {
@@ -352,7 +370,6 @@ static inline row_den make_row_denominator(int64_t K)
     int s = shift > 0 ? shift : 0, l = s - shift;
     int64_t K31;
     r.half = ((int64_t)1 << s) >> 1;
-    r.neg = -(int64_t)(shift > 0);
     r.s = s;
     K31 = ((K + r.half) >> s) << l; /* in [2^30, 2^31) for K > 0 */
     r.d.shift = shift;
@@ -373,7 +390,7 @@ static inline int32_t ratio_q30_mass(int64_t num, const row_den *r)
 /* ratio_q(num, d, 24), with the bounds and the clamp of ratio_q. */
 static inline int32_t ratio_q24(int64_t num, const row_den *r)
 {
-    int64_t x = pg__round_shift64(((num + r->half + ((num >> 63) & r->neg)) >> r->s) * r->inv24, 30);
+    int64_t x = row_round(((num + r->half) >> r->s) * r->inv24, 30);
     return (int32_t)(x > INT32_MAX ? INT32_MAX : x < -INT32_MAX ? -INT32_MAX : x);
 }
 
@@ -391,7 +408,7 @@ static pg_fix k_ratio(denominator t, denominator n)
 }
 
 /* (r x d) for a Q16 vector and a Q30 direction, rounded to Q16. */
-static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return (pg_fix)pg__round_shift64((int64_t)r.x * d.y - (int64_t)r.y * d.x, 30); }
+static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return (pg_fix)row_round((int64_t)r.x * d.y - (int64_t)r.y * d.x, 30); }
 
 /* round(a c / 2^16) for a wide a and a Q16.16 c: one int64 product when it cannot
  * overflow (-2^41 <= a < 2^41 and -2^21 <= c < 2^21, so |a c| <= 2^62: ordinary bodies),
@@ -403,14 +420,15 @@ static inline int64_t mul_q16(int64_t a, pg_fix c)
     uint64_t ra = (uint64_t)a + (UINT64_C(1) << 41), rc = (uint64_t)(int64_t)c + (UINT64_C(1) << 21);
     if (c == 0) return 0; /* often: a circle's anchor lies on its normal (and a small ball's
                              invI is past 2^41) */
-    if (((ra >> 42) | (rc >> 22)) == 0) return pg__round_shift64(a * c, 16);
+    if (((ra >> 42) | (rc >> 22)) == 0) return row_round(a * c, 16);
     /* |a| |c| = hi 2^32 + lo with hi = (|a| >> 32) |c| < 2^62 and lo = (|a| mod 2^32) |c|
-     * < 2^63, so round(|a| |c| / 2^16) = hi 2^16 + (lo + 2^15) / 2^16, rounded the same
-     * way as pg__mul64_shr (nearest, ties away from zero) and saturated like it. */
+     * < 2^63, so round(|a| |c| / 2^16) = hi 2^16 + (lo + half) / 2^16, rounded as the
+     * fast path's row_round (ties toward +infinity: half = 2^15 for a positive product,
+     * 2^15 - 1 for the magnitude of a negative one) and saturated like pg__mul64_shr. */
     ua = pg__mag64(a);
     uc = pg__mag64(c);
     hi = (ua >> 32) * uc;
-    lo = ((ua & 0xFFFFFFFFu) * uc + 0x8000u) >> 16;
+    lo = ((ua & 0xFFFFFFFFu) * uc + ((a < 0) != (c < 0) ? 0x7FFFu : 0x8000u)) >> 16;
     if (hi >= (UINT64_C(1) << 47)) return (a < 0) != (c < 0) ? -INT64_MAX : INT64_MAX;
     r = (hi << 16) + lo; /* < 2^63 + 2^47: may pass INT64_MAX */
     if (r > (uint64_t)INT64_MAX) r = (uint64_t)INT64_MAX;
@@ -444,7 +462,7 @@ PG__NOINLINE denominator row_coefficients_scaled(const pg_body *A, const pg_body
     int bB = pg__bit_length64((uint64_t)B->inv_inertia) + 2 * pg__bit_length64(pg__mag64(cB));
     int s = (bA > bB ? bA : bB) - 92;
     int64_t tA = pg__mul64_shr(A->inv_inertia, cA, 16 + s), tB = pg__mul64_shr(B->inv_inertia, cB, 16 + s);
-    int64_t K = pg__round_shift64(A->inv_mass + B->inv_mass, s) + mul_q16(tA, cA) + mul_q16(tB, cB);
+    int64_t K = row_round(A->inv_mass + B->inv_mass, s) + mul_q16(tA, cA) + mul_q16(tB, cB);
     denominator den = make_denominator(K);
     int32_t kA, kB, gA, gB;
     gA = tA != 0 ? ratio_q(tA, den, 24) : 0;
@@ -452,8 +470,8 @@ PG__NOINLINE denominator row_coefficients_scaled(const pg_body *A, const pg_body
     den.shift += s;
     kA = den.shift > 62 ? 0 : ratio_q(A->inv_mass, den, 30);
     kB = den.shift > 62 ? 0 : ratio_q(B->inv_mass, den, 30);
-    store_row(p, tangent, (int32_t)pg__round_shift64((int64_t)kA * d.x, 30), (int32_t)pg__round_shift64((int64_t)kA * d.y, 30),
-              (int32_t)pg__round_shift64((int64_t)kB * d.x, 30), (int32_t)pg__round_shift64((int64_t)kB * d.y, 30), gA, gB);
+    store_row(p, tangent, (int32_t)row_round((int64_t)kA * d.x, 30), (int32_t)row_round((int64_t)kA * d.y, 30),
+              (int32_t)row_round((int64_t)kB * d.x, 30), (int32_t)row_round((int64_t)kB * d.y, 30), gA, gB);
     return den;
 }
 
@@ -485,10 +503,10 @@ PG__INLINE_ROW denominator row_coefficients(const pg_body *A, const pg_body *B, 
          * exactly what mul_q16 returns */
         uint64_t rc = ((uint64_t)(int64_t)cA + (UINT64_C(1) << 16)) | ((uint64_t)(int64_t)cB + (UINT64_C(1) << 16));
         if ((((uint64_t)A->inv_inertia | (uint64_t)B->inv_inertia) >> 46 | rc >> 17) == 0) {
-            tA = pg__round_shift64(A->inv_inertia * cA, 16); /* invI (r x d): Q38 per metre */
-            tB = pg__round_shift64(B->inv_inertia * cB, 16);
-            qA = pg__round_shift64(tA * cA, 16); /* >= 0 */
-            qB = pg__round_shift64(tB * cB, 16);
+            tA = row_round(A->inv_inertia * cA, 16); /* invI (r x d): Q38 per metre */
+            tB = row_round(B->inv_inertia * cB, 16);
+            qA = row_round(tA * cA, 16); /* >= 0 */
+            qB = row_round(tB * cB, 16);
         } else {
             tA = mul_q16(A->inv_inertia, cA);
             tB = mul_q16(B->inv_inertia, cB);
@@ -502,15 +520,15 @@ PG__INLINE_ROW denominator row_coefficients(const pg_body *A, const pg_body *B, 
     }
     rd = make_row_denominator(K); /* K >= 0: a sum of terms >= 0 that fits */
     kA = ratio_q30_mass(A->inv_mass, &rd);
-    lA_x = (int32_t)pg__round_shift64((int64_t)kA * d.x, 30);
-    lA_y = (int32_t)pg__round_shift64((int64_t)kA * d.y, 30);
+    lA_x = (int32_t)row_round((int64_t)kA * d.x, 30);
+    lA_y = (int32_t)row_round((int64_t)kA * d.y, 30);
     if (B->inv_mass == A->inv_mass) {
         lB_x = lA_x;
         lB_y = lA_y;
     } else {
         kB = ratio_q30_mass(B->inv_mass, &rd);
-        lB_x = (int32_t)pg__round_shift64((int64_t)kB * d.x, 30);
-        lB_y = (int32_t)pg__round_shift64((int64_t)kB * d.y, 30);
+        lB_x = (int32_t)row_round((int64_t)kB * d.x, 30);
+        lB_y = (int32_t)row_round((int64_t)kB * d.y, 30);
     }
     store_row(p, tangent, lA_x, lA_y, lB_x, lB_y, tA != 0 ? ratio_q24(tA, &rd) : 0, tB != 0 ? ratio_q24(tB, &rd) : 0);
     return rd.d;
@@ -521,8 +539,8 @@ PG__INLINE_ROW denominator row_coefficients(const pg_body *A, const pg_body *B, 
  * n . (kA + kB) n and the angular part (r x n)_p g_q on each side. */
 static int64_t coupling(pg_dir n, const constraint_point *p, const constraint_point *q)
 {
-    int64_t lin = pg__round_shift64((int64_t)n.x * ((int64_t)q->nrow.lA_x + q->nrow.lB_x) + (int64_t)n.y * ((int64_t)q->nrow.lA_y + q->nrow.lB_y), 30);
-    return lin + pg__round_shift64((int64_t)p->cnA * q->nrow.gA + (int64_t)p->cnB * q->nrow.gB, 10);
+    int64_t lin = row_round((int64_t)n.x * ((int64_t)q->nrow.lA_x + q->nrow.lB_x) + (int64_t)n.y * ((int64_t)q->nrow.lA_y + q->nrow.lB_y), 30);
+    return lin + row_round((int64_t)p->cnA * q->nrow.gA + (int64_t)p->cnB * q->nrow.gB, 10);
 }
 
 /* Whether the two normal rows of c are solved together, and their coupling. Only when
@@ -542,7 +560,7 @@ static void setup_block(constraint *c)
     e01 = coupling(c->n, &c->p[0], &c->p[1]);
     e10 = coupling(c->n, &c->p[1], &c->p[0]);
     if (e01 > one || e01 < -one || e10 > one || e10 < -one) return;
-    det = one - pg__round_shift64(e01 * e10, 30);
+    det = one - row_round(e01 * e10, 30);
     if (det < one / 16) return;
     c->block = 1;
     c->e01 = (int32_t)e01;
@@ -684,16 +702,16 @@ static inline void store_velocity(solver_body *b, const velocity *v)
 /* The linear part of a row: what apply_row does when gA = gB = 0. */
 static inline void apply_linear(velocity *A, velocity *B, int64_t lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y)
 {
-    A->x -= pg__round_shift64(lambda * lA_x, 30);
-    A->y -= pg__round_shift64(lambda * lA_y, 30);
-    B->x += pg__round_shift64(lambda * lB_x, 30);
-    B->y += pg__round_shift64(lambda * lB_y, 30);
+    A->x -= row_round(lambda * lA_x, 30);
+    A->y -= row_round(lambda * lA_y, 30);
+    B->x += row_round(lambda * lB_x, 30);
+    B->y += row_round(lambda * lB_y, 30);
 }
 
 /* The linear part of relative_speed: all of it when cA = cB = 0. */
 static inline int64_t linear_speed(const velocity *A, const velocity *B, pg_dir d)
 {
-    return pg__round_shift64(d.x * (B->x - A->x) + d.y * (B->y - A->y), 30);
+    return row_round(d.x * (B->x - A->x) + d.y * (B->y - A->y), 30);
 }
 
 /* A whole row. It does not call apply_linear: written body by body (A's x, y, w, then
@@ -701,18 +719,18 @@ static inline int64_t linear_speed(const velocity *A, const velocity *B, pg_dir 
  * instructions on the awake pyramid (callgrind). */
 static inline void apply_row(velocity *A, velocity *B, int64_t lambda, int32_t lA_x, int32_t lA_y, int32_t lB_x, int32_t lB_y, int32_t gA, int32_t gB)
 {
-    A->x -= pg__round_shift64(lambda * lA_x, 30);
-    A->y -= pg__round_shift64(lambda * lA_y, 30);
-    A->w -= pg__round_shift64(lambda * gA, 24);
-    B->x += pg__round_shift64(lambda * lB_x, 30);
-    B->y += pg__round_shift64(lambda * lB_y, 30);
-    B->w += pg__round_shift64(lambda * gB, 24);
+    A->x -= row_round(lambda * lA_x, 30);
+    A->y -= row_round(lambda * lA_y, 30);
+    A->w -= row_round(lambda * gA, 24);
+    B->x += row_round(lambda * lB_x, 30);
+    B->y += row_round(lambda * lB_y, 30);
+    B->w += row_round(lambda * gB, 24);
 }
 
 /* The angular part of relative_speed (0 when cA = cB = 0). */
 static inline int64_t angular_speed(const velocity *A, const velocity *B, pg_fix cA, pg_fix cB)
 {
-    return pg__round_shift64(B->w * cB - A->w * cA, 16);
+    return row_round(B->w * cB - A->w * cA, 16);
 }
 
 /* Relative velocity of B's anchor against A's along direction d (cA, cB: r x d). */
@@ -730,17 +748,12 @@ static inline void anchor_now(const solver_body *b, pg_vec2 r, int round, int64_
         *y = (int64_t)b->dp.y + r.y;
         return;
     }
-    *x = (int64_t)b->dp.x + pg__round_shift64((int64_t)b->dq.c * r.x - (int64_t)b->dq.s * r.y, 30);
-    *y = (int64_t)b->dp.y + pg__round_shift64((int64_t)b->dq.s * r.x + (int64_t)b->dq.c * r.y, 30);
+    *x = (int64_t)b->dp.x + row_round((int64_t)b->dq.c * r.x - (int64_t)b->dq.s * r.y, 30);
+    *y = (int64_t)b->dp.y + row_round((int64_t)b->dq.s * r.x + (int64_t)b->dq.c * r.y, 30);
 }
 
 static inline int64_t clamp_lambda(int64_t acc, int64_t lo, int64_t hi) { return acc < lo ? lo : acc > hi ? hi : acc; }
 
-/* pg__round_shift64 of an x whose sign is known, for products whose factors' signs the
- * solver's invariants fix: its sign term x >> 63 is then the constant 0 (x >= 0) or -1
- * (x <= 0), and the same bits come from one addition. */
-static inline int64_t round_shift_nonneg(int64_t x, int n) { return (x + ((int64_t)1 << (n - 1))) >> n; }
-static inline int64_t round_shift_nonpos(int64_t x, int n) { return (x + ((int64_t)1 << (n - 1)) - 1) >> n; }
 
 /* A point's part of its friction row's bound, f (Kt/Kn) lambda_n in Q32 (solve_friction). */
 static inline int64_t friction_bound(const constraint_point *p) { return (int64_t)p->friction_ratio * p->normal_impulse; }
@@ -752,7 +765,7 @@ static inline int64_t friction_bound(const constraint_point *p) { return (int64_
 PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point *p, pg_dir t, int64_t bound)
 {
     /* bound >= 0: f is 0..10 (shape.c and restoring check it), Kt/Kn >= 0, lambda_n >= 0 */
-    int64_t max_f = round_shift_nonneg(bound, 16), acc;
+    int64_t max_f = row_round(bound, 16), acc;
     if (max_f > LAMBDA_MAX) max_f = LAMBDA_MAX;
     if (max_f == 0) {
         /* an unloaded contact: the bound is 0 whatever the sliding speed */
@@ -770,12 +783,21 @@ PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point 
  * m/s). x is not bounded by 2^33, where m x would leave int64: an anchor far from a
  * fast-turning body's centre moves at w (r x n), 8192 rad/s (VELOCITY_MAX) times 16.5 m
  * already 2^33 (and up to 32768 rad/s times 50 m, 2^36.6, right after a saturated
- * torque). Beyond 2^33 the 128-bit product, rounded the same way (nearest, ties away from
- * zero). Out of line, the rare path costs the row one unsigned comparison. */
-PG__NOINLINE int64_t mass_scale_times_wide(int32_t m, int64_t x) { return pg__mul64_shr(m, x, 30); }
+ * torque). Beyond 2^33 the 128-bit product, rounded the same way (row_round's ties toward
+ * +infinity): pg__mul64_shr rounds ties away from zero, so a negative product exactly
+ * halfway, whose low 30 bits (decided by the low 30 bits of each factor) are 2^29, is
+ * moved up by one. Out of line, the rare path costs the row one unsigned comparison. */
+PG__NOINLINE int64_t mass_scale_times_wide(int32_t m, int64_t x)
+{
+    const uint64_t low30 = (UINT64_C(1) << 30) - 1u;
+    int64_t r = pg__mul64_shr(m, x, 30); /* |m x| < 2^30 2^37: never saturated */
+    uint64_t low = ((pg__mag64(m) & low30) * (pg__mag64(x) & low30)) & low30;
+    if (m > 0 && x < 0 && low == (UINT64_C(1) << 29)) ++r;
+    return r;
+}
 static inline int64_t mass_scale_times(int32_t m, int64_t x)
 {
-    if ((uint64_t)x + (UINT64_C(1) << 33) < (UINT64_C(1) << 34)) return pg__round_shift64(m * x, 30);
+    if ((uint64_t)x + (UINT64_C(1) << 33) < (UINT64_C(1) << 34)) return row_round(m * x, 30);
     return mass_scale_times_wide(m, x);
 }
 
@@ -790,7 +812,7 @@ PG__INLINE_PASS int64_t normal_separation(const constraint *c, const solver_body
     if (use_bias) return p->separation;
     anchor_now(A, p->rA, c->round_a, &ax, &ay);
     anchor_now(B, p->rB, c->round_b, &bx, &by);
-    s = pg__round_shift64(c->n.x * (bx - ax) + c->n.y * (by - ay), 30) + p->adjusted_separation;
+    s = row_round(c->n.x * (bx - ax) + c->n.y * (by - ay), 30) + p->adjusted_separation;
     p->separation = s;
     return s;
 }
@@ -813,8 +835,8 @@ static inline void normal_seen_from(const solver_body *b, pg_dir n, int round, i
         *y = n.y;
         return;
     }
-    *x = pg__round_shift64((int64_t)b->dq.c * n.x + (int64_t)b->dq.s * n.y, 30);
-    *y = pg__round_shift64((int64_t)b->dq.c * n.y - (int64_t)b->dq.s * n.x, 30);
+    *x = row_round((int64_t)b->dq.c * n.x + (int64_t)b->dq.s * n.y, 30);
+    *y = row_round((int64_t)b->dq.c * n.y - (int64_t)b->dq.s * n.x, 30);
 }
 
 PG__INLINE_PASS void relax_separations(constraint *c, const solver_body *A, const solver_body *B, int64_t *s0, int64_t *s1)
@@ -824,8 +846,8 @@ PG__INLINE_PASS void relax_separations(constraint *c, const solver_body *A, cons
     int64_t lin = c->n.x * ((int64_t)B->dp.x - A->dp.x) + c->n.y * ((int64_t)B->dp.y - A->dp.y);
     normal_seen_from(A, c->n, c->round_a, &nAx, &nAy);
     normal_seen_from(B, c->n, c->round_b, &nBx, &nBy);
-    *s0 = pg__round_shift64(lin + nBx * p0->rB.x + nBy * p0->rB.y - nAx * p0->rA.x - nAy * p0->rA.y, 30) + p0->adjusted_separation;
-    *s1 = pg__round_shift64(lin + nBx * p1->rB.x + nBy * p1->rB.y - nAx * p1->rA.x - nAy * p1->rA.y, 30) + p1->adjusted_separation;
+    *s0 = row_round(lin + nBx * p0->rB.x + nBy * p0->rB.y - nAx * p0->rA.x - nAy * p0->rA.y, 30) + p0->adjusted_separation;
+    *s1 = row_round(lin + nBx * p1->rB.x + nBy * p1->rB.y - nAx * p1->rA.x - nAy * p1->rA.y, 30) + p1->adjusted_separation;
     p0->separation = *s0;
     p1->separation = *s1;
 }
@@ -848,7 +870,7 @@ PG__INLINE_ROW int64_t normal_target(const step_context *ctx, const softness *so
     if (use_bias) {
         /* the bias, capped at push_max, less what goes to the pseudo velocities (DEEP PUSH) */
         /* s <= 0 here and bias_rate >= 0 (contact_hertz > 0, the damping ratio >= 0) */
-        int64_t bias = round_shift_nonpos((int64_t)soft->bias_rate * s, 16);
+        int64_t bias = row_round((int64_t)soft->bias_rate * s, 16);
         if (bias < -ctx->push_max) bias = -ctx->push_max;
         *is_soft = 1;
         return rel + bias - p->deep_push;
@@ -866,9 +888,9 @@ PG__INLINE_ROW void set_push(const step_context *ctx, const softness *soft, cons
     int64_t bias, hold;
     p->deep_push = 0;
     if (s >= soft->floor_depth) return; /* a gap, or shallow: all of it is velocity */
-    bias = pg__round_shift64((int64_t)soft->bias_rate * s, 16);
+    bias = row_round((int64_t)soft->bias_rate * s, 16);
     if (bias < -ctx->push_max) bias = -ctx->push_max;
-    hold = pg__round_shift64((int64_t)p->normal_impulse * soft->hold_rate, 16) + ctx->push_floor;
+    hold = row_round((int64_t)p->normal_impulse * soft->hold_rate, 16) + ctx->push_floor;
     if (bias < -hold) {
         p->deep_push = (pg_fix)(bias + hold);
         c->deep = 1;
@@ -882,7 +904,7 @@ PG__INLINE_ROW int64_t normal_update(const softness *soft, const constraint_poin
 {
     if (!is_soft) return (int64_t)p->normal_impulse - y;
     /* impulse_scale > 0 and lambda >= 0 (every store clamps it to [0, LAMBDA_MAX]) */
-    return (int64_t)p->normal_impulse - mass_scale_times(soft->mass_scale, y) - round_shift_nonneg((int64_t)soft->impulse_scale * p->normal_impulse, 30);
+    return (int64_t)p->normal_impulse - mass_scale_times(soft->mass_scale, y) - row_round((int64_t)soft->impulse_scale * p->normal_impulse, 30);
 }
 
 /* Store a normal row's new lambda acc (clamped to [0, LAMBDA_MAX]) and apply the change. */
@@ -913,12 +935,12 @@ PG__INLINE_ROW void normal_apply_pair(velocity *va, velocity *vb, constraint_poi
     d1 = acc1 - p1->normal_impulse;
     p0->normal_impulse = (pg_fix)acc0;
     p1->normal_impulse = (pg_fix)acc1;
-    va->x -= pg__round_shift64(d0 * p0->nrow.lA_x, 30) + pg__round_shift64(d1 * p1->nrow.lA_x, 30);
-    va->y -= pg__round_shift64(d0 * p0->nrow.lA_y, 30) + pg__round_shift64(d1 * p1->nrow.lA_y, 30);
-    va->w -= pg__round_shift64(d0 * p0->nrow.gA, 24) + pg__round_shift64(d1 * p1->nrow.gA, 24);
-    vb->x += pg__round_shift64(d0 * p0->nrow.lB_x, 30) + pg__round_shift64(d1 * p1->nrow.lB_x, 30);
-    vb->y += pg__round_shift64(d0 * p0->nrow.lB_y, 30) + pg__round_shift64(d1 * p1->nrow.lB_y, 30);
-    vb->w += pg__round_shift64(d0 * p0->nrow.gB, 24) + pg__round_shift64(d1 * p1->nrow.gB, 24);
+    va->x -= row_round(d0 * p0->nrow.lA_x, 30) + row_round(d1 * p1->nrow.lA_x, 30);
+    va->y -= row_round(d0 * p0->nrow.lA_y, 30) + row_round(d1 * p1->nrow.lA_y, 30);
+    va->w -= row_round(d0 * p0->nrow.gA, 24) + row_round(d1 * p1->nrow.gA, 24);
+    vb->x += row_round(d0 * p0->nrow.lB_x, 30) + row_round(d1 * p1->nrow.lB_x, 30);
+    vb->y += row_round(d0 * p0->nrow.lB_y, 30) + row_round(d1 * p1->nrow.lB_y, 30);
+    vb->w += row_round(d0 * p0->nrow.gB, 24) + row_round(d1 * p1->nrow.gB, 24);
 }
 
 /* The approach speed of a point that first pushes now, at relative normal speed rel:
@@ -953,8 +975,8 @@ PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft,
  * |b - e b'| < 2^33 (|e| <= 1) and with inv_det <= 2^28 the products fit. */
 PG__INLINE_ROW void block_inverse(const constraint *c, int32_t e01, int32_t e10, int64_t b0, int64_t b1, int64_t *y0, int64_t *y1)
 {
-    *y0 = pg__round_shift64((b0 - pg__round_shift64((int64_t)e01 * b1, 30)) * c->inv_det, 24);
-    *y1 = pg__round_shift64((b1 - pg__round_shift64((int64_t)e10 * b0, 30)) * c->inv_det, 24);
+    *y0 = row_round((b0 - row_round((int64_t)e01 * b1, 30)) * c->inv_det, 24);
+    *y1 = row_round((b1 - row_round((int64_t)e10 * b0, 30)) * c->inv_det, 24);
 }
 
 /* Both |b| below 2^32 (65536 m/s): the block's fast path. */
@@ -1183,12 +1205,12 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
          * impulse is 0, or a side's g = 0 where normal_linear, adds round(0) = 0) */
         const constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
         int64_t n0 = p0->normal_impulse, n1 = p1->normal_impulse, t0 = p0->tangent_impulse;
-        va.x -= pg__round_shift64(n0 * p0->nrow.lA_x, 30) + pg__round_shift64(n1 * p1->nrow.lA_x, 30) + pg__round_shift64(t0 * p0->trow.lA_x, 30);
-        va.y -= pg__round_shift64(n0 * p0->nrow.lA_y, 30) + pg__round_shift64(n1 * p1->nrow.lA_y, 30) + pg__round_shift64(t0 * p0->trow.lA_y, 30);
-        va.w -= pg__round_shift64(n0 * p0->nrow.gA, 24) + pg__round_shift64(n1 * p1->nrow.gA, 24) + pg__round_shift64(t0 * p0->trow.gA, 24);
-        vb.x += pg__round_shift64(n0 * p0->nrow.lB_x, 30) + pg__round_shift64(n1 * p1->nrow.lB_x, 30) + pg__round_shift64(t0 * p0->trow.lB_x, 30);
-        vb.y += pg__round_shift64(n0 * p0->nrow.lB_y, 30) + pg__round_shift64(n1 * p1->nrow.lB_y, 30) + pg__round_shift64(t0 * p0->trow.lB_y, 30);
-        vb.w += pg__round_shift64(n0 * p0->nrow.gB, 24) + pg__round_shift64(n1 * p1->nrow.gB, 24) + pg__round_shift64(t0 * p0->trow.gB, 24);
+        va.x -= row_round(n0 * p0->nrow.lA_x, 30) + row_round(n1 * p1->nrow.lA_x, 30) + row_round(t0 * p0->trow.lA_x, 30);
+        va.y -= row_round(n0 * p0->nrow.lA_y, 30) + row_round(n1 * p1->nrow.lA_y, 30) + row_round(t0 * p0->trow.lA_y, 30);
+        va.w -= row_round(n0 * p0->nrow.gA, 24) + row_round(n1 * p1->nrow.gA, 24) + row_round(t0 * p0->trow.gA, 24);
+        vb.x += row_round(n0 * p0->nrow.lB_x, 30) + row_round(n1 * p1->nrow.lB_x, 30) + row_round(t0 * p0->trow.lB_x, 30);
+        vb.y += row_round(n0 * p0->nrow.lB_y, 30) + row_round(n1 * p1->nrow.lB_y, 30) + row_round(t0 * p0->trow.lB_y, 30);
+        vb.w += row_round(n0 * p0->nrow.gB, 24) + row_round(n1 * p1->nrow.gB, 24) + row_round(t0 * p0->trow.gB, 24);
     } else {
         for (k = 0; k < c->count; ++k) {
             constraint_point *p = &c->p[k];
@@ -1388,8 +1410,8 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
             /* Anchors on each body's own surface (the manifold point is midway between
              * them): a speculative point can be far from both bodies, and an anchor out
              * there would swing with the body's rotation and fake the gap. */
-            int64_t hx = pg__round_shift64((int64_t)c->n.x * cp->separation, 31);
-            int64_t hy = pg__round_shift64((int64_t)c->n.y * cp->separation, 31);
+            int64_t hx = row_round((int64_t)c->n.x * cp->separation, 31);
+            int64_t hy = row_round((int64_t)c->n.y * cp->separation, 31);
             p->rA = pg_v2(pg__sat64((int64_t)cp->point.x - hx - A_center.x), pg__sat64((int64_t)cp->point.y - hy - A_center.y));
             p->rB = pg_v2(pg__sat64((int64_t)cp->point.x + hx - B_center.x), pg__sat64((int64_t)cp->point.y + hy - B_center.y));
         }
@@ -1400,13 +1422,13 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
              * (t = (n.y, -n.x)): the tangent lever arms round the same two products */
             int64_t nrA = (int64_t)c->n.x * p->rA.x + (int64_t)c->n.y * p->rA.y;
             int64_t nrB = (int64_t)c->n.x * p->rB.x + (int64_t)c->n.y * p->rB.y;
-            int64_t along = pg__round_shift64(nrB - nrA, 30);
+            int64_t along = row_round(nrB - nrA, 30); /* as normal_separation rounds it */
             p->adjusted_separation = pg__sat64((int64_t)cp->separation - along);
             /* what normal_separation finds before anything moves (dp = 0, dq = 1 make
              * each anchor exactly r), for the first substep's soft pass */
             p->separation = along + p->adjusted_separation;
-            p->ctA = (pg_fix)pg__round_shift64(-nrA, 30); /* cross_rd(rA, t) */
-            p->ctB = (pg_fix)pg__round_shift64(-nrB, 30);
+            p->ctA = (pg_fix)row_round(-nrA, 30); /* cross_rd(rA, t) */
+            p->ctB = (pg_fix)row_round(-nrB, 30);
         }
         p->cnA = turnA ? cross_rd(p->rA, c->n) : 0;
         p->cnB = turnB ? cross_rd(p->rB, c->n) : 0;
@@ -1434,8 +1456,8 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
     c->central_friction = c->count == 2 && (effects & PG_EFFECT_FRICTION) != 0;
     if (c->central_friction) {
         constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
-        p0->ctA = (pg_fix)pg__round_shift64((int64_t)p0->ctA + p1->ctA, 1);
-        p0->ctB = (pg_fix)pg__round_shift64((int64_t)p0->ctB + p1->ctB, 1);
+        p0->ctA = (pg_fix)row_round((int64_t)p0->ctA + p1->ctA, 1);
+        p0->ctB = (pg_fix)row_round((int64_t)p0->ctB + p1->ctB, 1);
         p0->tangent_impulse = (pg_fix)clamp_lambda((int64_t)p0->tangent_impulse + p1->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX);
         p1->tangent_impulse = 0;
     }
@@ -1474,12 +1496,12 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
 /* The central friction row's lambda stored on the contact's two points in proportion to
  * their normal impulses (CENTRAL FRICTION); half each, rounded, when neither holds one.
  * |total| <= 2^29 and each normal impulse <= 2^29, so total n0 fits int64; the quotient
- * rounds to nearest, ties away from zero, as everywhere, and the two parts add up to the
+ * rounds to nearest, ties away from zero (wide.h), and the two parts add up to the
  * total exactly. */
 static void split_central_friction(const constraint *c, pg_contact *ct)
 {
     int64_t total = c->p[0].tangent_impulse, n0 = c->p[0].normal_impulse, n1 = c->p[1].normal_impulse;
-    int64_t part0 = n0 + n1 > 0 ? pg__div64_shl(total * n0, n0 + n1, 0) : pg__round_shift64(total, 1);
+    int64_t part0 = n0 + n1 > 0 ? pg__div64_shl(total * n0, n0 + n1, 0) : row_round(total, 1);
     ct->points[0].tangent_impulse = (pg_fix)part0;
     ct->points[1].tangent_impulse = (pg_fix)(total - part0);
 }
