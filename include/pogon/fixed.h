@@ -26,9 +26,10 @@
  *   The one other rule: the contact solver's rows (src/solver.c, ROUNDING) round to
  *   nearest with ties toward +infinity, (x + 2^(n-1)) >> n, which differs from this
  *   rule only at an exact tie of a negative value, by one unit, and costs half the
- *   operations in the step's hottest loop. It is no creeping bias: a tie needs the n
- *   bits shifted out to be exactly one half, and a symmetric 20-box column keeps every
- *   box at x = 0 exactly for 60 s (tests/stability/test_stacking.c).
+ *   operations in the step's hottest loop. Where ties are common, the angular speed
+ *   at a lever arm that is a power of two, the solver keeps this rule; elsewhere a tie
+ *   needs the n bits shifted out to be exactly one half, and a symmetric 20-box column
+ *   keeps every box at x = 0 exactly for 60 s (tests/stability/test_stacking.c).
  *
  * OVERFLOW
  *   Scalar operations SATURATE: a result that does not fit becomes ±PG_FIX_MAX.
