@@ -159,6 +159,14 @@
  * time, rows beyond int64) and the quotient that splits the central friction. None of
  * them is on a row's path.
  *
+ * TWINS: where both sides have the same inverse mass (equal bodies, as in a stack or a
+ * pyramid of one box; a side that cannot move against a kinematic one) kA = kB, so every
+ * row's lA = lB (prepare shares them), and a row's linear change round(lambda l) is the
+ * same number for both bodies: it is computed once and given to both (c->twin). The same
+ * bits with two products a row fewer: 1.6 % of the awake pyramid's instructions with
+ * clang, 1.8 % with gcc (callgrind: 350.4 -> 344.9 M and 351.6 -> 345.1 M per 100 steps),
+ * 1.7 % of its time under node.
+ *
  * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
  * 1, odd ones 1 then 0); the block is the same in either order; and a mirrored product
  * rounds to the mirrored value except at an exact negative tie, so a symmetric column
@@ -261,6 +269,7 @@ typedef struct constraint {
                                 with a pseudo impulse (DEEP PUSH) */
     int32_t central_friction;/* two points and friction on: the one friction row of the
                                 manifold, in p[0] (CENTRAL FRICTION) */
+    int32_t twin;            /* equal inverse masses on both sides (TWINS) */
     int32_t rows_ready;      /* the rows' coefficients, friction ratios and the block are set
                                 (LAZY ROWS, in prepare_constraints) */
     constraint_point p[2];
@@ -734,6 +743,18 @@ static inline void apply_row(velocity *A, velocity *B, int64_t lambda, int32_t l
     B->w += row_round(lambda * gB, 24);
 }
 
+/* apply_row for TWINS (lA = lB): the linear change is rounded once and given to both. */
+static inline void apply_row_twin(velocity *A, velocity *B, int64_t lambda, int32_t l_x, int32_t l_y, int32_t gA, int32_t gB)
+{
+    int64_t x = row_round(lambda * l_x, 30), y = row_round(lambda * l_y, 30);
+    A->x -= x;
+    A->y -= y;
+    A->w -= row_round(lambda * gA, 24);
+    B->x += x;
+    B->y += y;
+    B->w += row_round(lambda * gB, 24);
+}
+
 /* The angular part of relative_speed (0 when cA = cB = 0), rounded ties away from zero
  * (ROUNDING: lever arms of 0.5 m make ties common here). */
 static inline int64_t angular_speed(const velocity *A, const velocity *B, pg_fix cA, pg_fix cB)
@@ -770,7 +791,7 @@ static inline int64_t friction_bound(const constraint_point *p) { return (int64_
  * the Q16 ratio f (Kt/Kn) times the Q16 lambda_n of the row's point, or for a manifold's
  * central row the sum of that over both points (CENTRAL FRICTION); each product is below
  * 2^31 2^29, so the sum of two fits int64 and is rounded once. */
-PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point *p, pg_dir t, int64_t bound)
+PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point *p, pg_dir t, int64_t bound, int twin)
 {
     /* bound >= 0: f is 0..10 (shape.c and restoring check it), Kt/Kn >= 0, lambda_n >= 0 */
     int64_t max_f = row_round(bound, 16), acc;
@@ -783,7 +804,8 @@ PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point 
         acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(va, vb, t, p->ctA, p->ctB), -max_f, max_f);
     }
     if (acc == p->tangent_impulse) return; /* held at its bound: nothing changes */
-    apply_row(va, vb, acc - p->tangent_impulse, p->trow.lA_x, p->trow.lA_y, p->trow.lB_x, p->trow.lB_y, p->trow.gA, p->trow.gB);
+    if (twin) apply_row_twin(va, vb, acc - p->tangent_impulse, p->trow.lA_x, p->trow.lA_y, p->trow.gA, p->trow.gB);
+    else apply_row(va, vb, acc - p->tangent_impulse, p->trow.lA_x, p->trow.lA_y, p->trow.lB_x, p->trow.lB_y, p->trow.gA, p->trow.gB);
     p->tangent_impulse = (pg_fix)acc;
 }
 
@@ -932,7 +954,7 @@ PG__INLINE_ROW void normal_apply(const constraint *c, velocity *va, velocity *vb
  * (setup_block), so both rows are whole. Written out, without the test for a change:
  * apply_row row by row left clang keeping half the velocities on the stack (callgrind,
  * awake pyramid: 3.3 % of the instructions, clang). */
-PG__INLINE_ROW void normal_apply_pair(velocity *va, velocity *vb, constraint_point *p0, int64_t acc0, constraint_point *p1, int64_t acc1)
+PG__INLINE_ROW void normal_apply_pair(velocity *va, velocity *vb, constraint_point *p0, int64_t acc0, constraint_point *p1, int64_t acc1, int twin)
 {
     int64_t d0, d1;
     if (acc0 > LAMBDA_MAX) acc0 = LAMBDA_MAX;
@@ -943,6 +965,17 @@ PG__INLINE_ROW void normal_apply_pair(velocity *va, velocity *vb, constraint_poi
     d1 = acc1 - p1->normal_impulse;
     p0->normal_impulse = (pg_fix)acc0;
     p1->normal_impulse = (pg_fix)acc1;
+    if (twin) {
+        int64_t x = row_round(d0 * p0->nrow.lA_x, 30) + row_round(d1 * p1->nrow.lA_x, 30);
+        int64_t y = row_round(d0 * p0->nrow.lA_y, 30) + row_round(d1 * p1->nrow.lA_y, 30);
+        va->x -= x;
+        va->y -= y;
+        va->w -= row_round(d0 * p0->nrow.gA, 24) + row_round(d1 * p1->nrow.gA, 24);
+        vb->x += x;
+        vb->y += y;
+        vb->w += row_round(d0 * p0->nrow.gB, 24) + row_round(d1 * p1->nrow.gB, 24);
+        return;
+    }
     va->x -= row_round(d0 * p0->nrow.lA_x, 30) + row_round(d1 * p1->nrow.lA_x, 30);
     va->y -= row_round(d0 * p0->nrow.lA_y, 30) + row_round(d1 * p1->nrow.lA_y, 30);
     va->w -= row_round(d0 * p0->nrow.gA, 24) + row_round(d1 * p1->nrow.gA, 24);
@@ -1017,7 +1050,7 @@ PG__INLINE_PASS int solve_normal_pair(const step_context *ctx, const softness *s
     if (acc0 < 0 || acc1 < 0) return 0;
     note_approach(ctx, c, p0, rel0);
     note_approach(ctx, c, p1, rel1);
-    normal_apply_pair(va, vb, p0, acc0, p1, acc1);
+    normal_apply_pair(va, vb, p0, acc0, p1, acc1, c->twin);
     return 1;
 }
 
@@ -1099,7 +1132,7 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, const softness *s
         t.x = c->n.y;
         t.y = -c->n.x;
         if (c->central_friction) bound += friction_bound(&c->p[1]);
-        solve_friction(&va, &vb, &c->p[0], t, bound);
+        solve_friction(&va, &vb, &c->p[0], t, bound, c->twin);
     }
     store_velocity(&bodies[c->a], &va);
     store_velocity(&bodies[c->b], &vb);
@@ -1213,6 +1246,19 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
          * impulse is 0, or a side's g = 0 where normal_linear, adds round(0) = 0) */
         const constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
         int64_t n0 = p0->normal_impulse, n1 = p1->normal_impulse, t0 = p0->tangent_impulse;
+        if (c->twin) {
+            int64_t x = row_round(n0 * p0->nrow.lA_x, 30) + row_round(n1 * p1->nrow.lA_x, 30) + row_round(t0 * p0->trow.lA_x, 30);
+            int64_t y = row_round(n0 * p0->nrow.lA_y, 30) + row_round(n1 * p1->nrow.lA_y, 30) + row_round(t0 * p0->trow.lA_y, 30);
+            va.x -= x;
+            va.y -= y;
+            va.w -= row_round(n0 * p0->nrow.gA, 24) + row_round(n1 * p1->nrow.gA, 24) + row_round(t0 * p0->trow.gA, 24);
+            vb.x += x;
+            vb.y += y;
+            vb.w += row_round(n0 * p0->nrow.gB, 24) + row_round(n1 * p1->nrow.gB, 24) + row_round(t0 * p0->trow.gB, 24);
+            store_velocity(A, &va);
+            store_velocity(B, &vb);
+            return;
+        }
         va.x -= row_round(n0 * p0->nrow.lA_x, 30) + row_round(n1 * p1->nrow.lA_x, 30) + row_round(t0 * p0->trow.lA_x, 30);
         va.y -= row_round(n0 * p0->nrow.lA_y, 30) + row_round(n1 * p1->nrow.lA_y, 30) + row_round(t0 * p0->trow.lA_y, 30);
         va.w -= row_round(n0 * p0->nrow.gA, 24) + row_round(n1 * p1->nrow.gA, 24) + row_round(t0 * p0->trow.gA, 24);
@@ -1399,6 +1445,7 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
      * masses differ 4:1 or more: a soft contact's steady overlap grows with the load
      * over the lighter body's mass, and this halves it where the ratio is large.
      * (Inverse masses are >= 0: x / 4 is x >> 2, without the rounding toward 0.) */
+    c->twin = A->inv_mass == B->inv_mass;
     c->soft_static = A->inv_mass == 0 || B->inv_mass == 0 || (A->inv_mass >> 2) >= B->inv_mass || (B->inv_mass >> 2) >= A->inv_mass;
     c->round_a = centred_circle(w, ct->shape_a, ct->body_a);
     c->round_b = centred_circle(w, ct->shape_b, ct->body_b);
