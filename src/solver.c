@@ -228,7 +228,8 @@ typedef struct solver_body {
 typedef struct row_coeffs { int32_t lA_x, lA_y, lB_x, lB_y, gA, gB; } row_coeffs;
 
 typedef struct constraint_point {
-    pg_vec2 rA, rB;
+    pg_fix nrA, xrA, nrB, xrB;       /* each anchor r as n . r and r x n (Q16.16 m, at the
+                                        step's start): what the separation needs of it */
     pg_fix adjusted_separation;
     pg_fix cnA, cnB, ctA, ctB;       /* r x n, r x t: Q16.16 m */
     row_coeffs nrow, trow;           /* the normal and the tangent row */
@@ -424,7 +425,7 @@ static pg_fix k_ratio(denominator t, denominator n)
 }
 
 /* (r x d) for a Q16 vector and a Q30 direction, rounded to Q16. */
-static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return (pg_fix)row_round((int64_t)r.x * d.y - (int64_t)r.y * d.x, 30); }
+static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return pg__sat64(row_round((int64_t)r.x * d.y - (int64_t)r.y * d.x, 30)); }
 
 /* round(a c / 2^16) for a wide a and a Q16.16 c: one int64 product when it cannot
  * overflow (-2^41 <= a < 2^41 and -2^21 <= c < 2^21, so |a c| <= 2^62: ordinary bodies),
@@ -768,18 +769,16 @@ static inline int64_t relative_speed(const velocity *A, const velocity *B, pg_di
     return linear_speed(A, B, d) + angular_speed(A, B, cA, cB);
 }
 
-/* Where anchor r of a body is now, relative to the body's centre at the step's start:
- * (c - c0) + R(a - a0) r. Positions are within the envelope, so int64 holds it all. */
-static inline void anchor_now(const solver_body *b, pg_vec2 r, int round, int64_t *x, int64_t *y)
-{
-    if (round) { /* a circle's surface point along the normal does not turn with it */
-        *x = (int64_t)b->dp.x + r.x;
-        *y = (int64_t)b->dp.y + r.y;
-        return;
-    }
-    *x = (int64_t)b->dp.x + row_round((int64_t)b->dq.c * r.x - (int64_t)b->dq.s * r.y, 30);
-    *y = (int64_t)b->dp.y + row_round((int64_t)b->dq.s * r.x + (int64_t)b->dq.c * r.y, 30);
-}
+/* How far along the normal n a side's anchor r lies from the side's centre now, Q46:
+ * n . R r for the side's turn since the step's start q = R = (c, s), which is
+ * c (n . r) + s (r x n), two products of the step's constants nr = n . r and xr = r x n
+ * (constraint_point). A round side's anchor does not turn with it: its q is the identity
+ * (turn_of). At the step's start (q = 1: c = 2^30, s = 0) it is nr 2^30 exactly.
+ * |(c, s)| <= 2^30 (1 + 2^-29) and |(nr, xr)| <= 2^31.5 (each a pg_fix), so the sum is
+ * below 2^61.5. */
+static const pg_rot no_turn = { PG_ROT_ONE, 0 };
+static inline const pg_rot *turn_of(const solver_body *b, int round) { return round ? &no_turn : &b->dq; }
+static inline int64_t anchor_along(const pg_rot *q, pg_fix nr, pg_fix xr) { return (int64_t)q->c * nr + (int64_t)q->s * xr; }
 
 static inline int64_t clamp_lambda(int64_t acc, int64_t lo, int64_t hi) { return acc < lo ? lo : acc > hi ? hi : acc; }
 
@@ -838,46 +837,24 @@ static inline int64_t mass_scale_times(int32_t m, int64_t x)
 PG__INLINE_PASS int64_t normal_separation(const constraint *c, const solver_body *A, const solver_body *B, constraint_point *p,
                                           int use_bias)
 {
-    int64_t s, ax, ay, bx, by;
+    int64_t s;
     if (use_bias) return p->separation;
-    anchor_now(A, p->rA, c->round_a, &ax, &ay);
-    anchor_now(B, p->rB, c->round_b, &bx, &by);
-    s = row_round(c->n.x * (bx - ax) + c->n.y * (by - ay), 30) + p->adjusted_separation;
+    s = row_round(c->n.x * ((int64_t)B->dp.x - A->dp.x) + c->n.y * ((int64_t)B->dp.y - A->dp.y) +
+                      anchor_along(turn_of(B, c->round_b), p->nrB, p->xrB) - anchor_along(turn_of(A, c->round_a), p->nrA, p->xrA), 30) +
+        p->adjusted_separation;
     p->separation = s;
     return s;
 }
 
-/* The relax pass's separations of both points of a two-point manifold: what
- * normal_separation finds, with each body's turn applied once to the normal instead of to
- * each anchor, since n . R r = (R^T n) . r: s = round(n . (dpB - dpA) + (R_B^T n) . rB -
- * (R_A^T n) . rA) + adjusted. That is four roundings a manifold (R^T n to Q2.30, for each
- * body) and one a point, where turning each anchor took five a point; 2.6 % of the awake
- * pyramid's instructions (callgrind, clang: 487.8 -> 475.3 M per 100 steps). A round
- * side does not turn its anchor, so its n is exact; at the step's start (dp = 0, no turn)
- * the result is exactly prepare_constraint's. A single point keeps normal_separation:
- * turning the normal costs it four products more than turning its anchor. Bounds: |n . (dpB - dpA)| < 2^30 2^30.5
- * and |(R^T n) . r| < 2^30 (1 + 2^-29) 2^31.5 (a restored snapshot's anchors may sit at
- * the edge of the range), so the sum of the three fits int64. */
-static inline void normal_seen_from(const solver_body *b, pg_dir n, int round, int64_t *x, int64_t *y)
-{
-    if (round) {
-        *x = n.x;
-        *y = n.y;
-        return;
-    }
-    *x = row_round((int64_t)b->dq.c * n.x + (int64_t)b->dq.s * n.y, 30);
-    *y = row_round((int64_t)b->dq.c * n.y - (int64_t)b->dq.s * n.x, 30);
-}
-
+/* The relax pass's separations of both points of a two-point manifold, as
+ * normal_separation finds them, the linear part n . (dpB - dpA) computed once. */
 PG__INLINE_PASS void relax_separations(constraint *c, const solver_body *A, const solver_body *B, int64_t *s0, int64_t *s1)
 {
     constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
-    int64_t nAx, nAy, nBx, nBy;
+    const pg_rot *qA = turn_of(A, c->round_a), *qB = turn_of(B, c->round_b);
     int64_t lin = c->n.x * ((int64_t)B->dp.x - A->dp.x) + c->n.y * ((int64_t)B->dp.y - A->dp.y);
-    normal_seen_from(A, c->n, c->round_a, &nAx, &nAy);
-    normal_seen_from(B, c->n, c->round_b, &nBx, &nBy);
-    *s0 = row_round(lin + nBx * p0->rB.x + nBy * p0->rB.y - nAx * p0->rA.x - nAy * p0->rA.y, 30) + p0->adjusted_separation;
-    *s1 = row_round(lin + nBx * p1->rB.x + nBy * p1->rB.y - nAx * p1->rA.x - nAy * p1->rA.y, 30) + p1->adjusted_separation;
+    *s0 = row_round(lin + anchor_along(qB, p0->nrB, p0->xrB) - anchor_along(qA, p0->nrA, p0->xrA), 30) + p0->adjusted_separation;
+    *s1 = row_round(lin + anchor_along(qB, p1->nrB, p1->xrB) - anchor_along(qA, p1->nrA, p1->xrA), 30) + p1->adjusted_separation;
     p0->separation = *s0;
     p1->separation = *s1;
 }
@@ -1467,26 +1444,29 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
              * there would swing with the body's rotation and fake the gap. */
             int64_t hx = row_round((int64_t)c->n.x * cp->separation, 31);
             int64_t hy = row_round((int64_t)c->n.y * cp->separation, 31);
-            p->rA = pg_v2(pg__sat64((int64_t)cp->point.x - hx - A_center.x), pg__sat64((int64_t)cp->point.y - hy - A_center.y));
-            p->rB = pg_v2(pg__sat64((int64_t)cp->point.x + hx - B_center.x), pg__sat64((int64_t)cp->point.y + hy - B_center.y));
-        }
-        {
+            pg_vec2 rA = pg_v2(pg__sat64((int64_t)cp->point.x - hx - A_center.x), pg__sat64((int64_t)cp->point.y - hy - A_center.y));
+            pg_vec2 rB = pg_v2(pg__sat64((int64_t)cp->point.x + hx - B_center.x), pg__sat64((int64_t)cp->point.y + hy - B_center.y));
             /* in int64: a restored snapshot may hold any contact point, and anchors
-             * saturated at the edge of the range are up to 2^32 apart. n . (rB - rA) is
-             * n . rB - n . rA exactly (each below 2^61.5), and r x t = -(n . r) exactly
-             * (t = (n.y, -n.x)): the tangent lever arms round the same two products */
-            int64_t nrA = (int64_t)c->n.x * p->rA.x + (int64_t)c->n.y * p->rA.y;
-            int64_t nrB = (int64_t)c->n.x * p->rB.x + (int64_t)c->n.y * p->rB.y;
-            int64_t along = row_round(nrB - nrA, 30); /* as normal_separation rounds it */
+             * saturated at the edge of the range are up to 2^32 apart; n . r and r x n are
+             * below 2^61.5 in Q46, saturated to pg_fix. r x t = -(n . r) exactly (t = (n.y,
+             * -n.x)): the tangent lever arms round the same products */
+            int64_t nrA = (int64_t)c->n.x * rA.x + (int64_t)c->n.y * rA.y;
+            int64_t nrB = (int64_t)c->n.x * rB.x + (int64_t)c->n.y * rB.y;
+            int64_t along;
+            p->nrA = pg__sat64(row_round(nrA, 30));
+            p->nrB = pg__sat64(row_round(nrB, 30));
+            p->xrA = cross_rd(rA, c->n);
+            p->xrB = cross_rd(rB, c->n);
+            /* what normal_separation finds before anything moves (dp = 0, dq = 1: each
+             * anchor_along is nr 2^30), for the first substep's soft pass */
+            along = (int64_t)p->nrB - p->nrA;
             p->adjusted_separation = pg__sat64((int64_t)cp->separation - along);
-            /* what normal_separation finds before anything moves (dp = 0, dq = 1 make
-             * each anchor exactly r), for the first substep's soft pass */
             p->separation = along + p->adjusted_separation;
             p->ctA = (pg_fix)row_round(-nrA, 30); /* cross_rd(rA, t) */
             p->ctB = (pg_fix)row_round(-nrB, 30);
         }
-        p->cnA = turnA ? cross_rd(p->rA, c->n) : 0;
-        p->cnB = turnB ? cross_rd(p->rB, c->n) : 0;
+        p->cnA = turnA ? p->xrA : 0;
+        p->cnB = turnB ? p->xrB : 0;
         if (p->cnA != 0 || p->cnB != 0) c->normal_linear = 0;
         p->normal_impulse = (pg_fix)clamp_lambda(cp->normal_impulse, 0, LAMBDA_MAX);
         p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
