@@ -228,8 +228,9 @@ typedef struct solver_body {
 typedef struct row_coeffs { int32_t lA_x, lA_y, lB_x, lB_y, gA, gB; } row_coeffs;
 
 typedef struct constraint_point {
-    pg_fix nrA, xrA, nrB, xrB;       /* each anchor r as n . r and r x n (Q16.16 m, at the
-                                        step's start): what the separation needs of it */
+    int64_t nrA, xrA, nrB, xrB;      /* each anchor r as n . r and r x n (Q16.16 m, at the
+                                        step's start): what the separation needs of it;
+                                        below 2^31.5, the length of r */
     pg_fix adjusted_separation;
     pg_fix cnA, cnB, ctA, ctB;       /* r x n, r x t: Q16.16 m */
     row_coeffs nrow, trow;           /* the normal and the tangent row */
@@ -424,8 +425,6 @@ static pg_fix k_ratio(denominator t, denominator n)
     return r > (uint64_t)PG_FIX_MAX ? PG_FIX_MAX : (pg_fix)r;
 }
 
-/* (r x d) for a Q16 vector and a Q30 direction, rounded to Q16. */
-static pg_fix cross_rd(pg_vec2 r, pg_dir d) { return pg__sat64(row_round((int64_t)r.x * d.y - (int64_t)r.y * d.x, 30)); }
 
 /* round(a c / 2^16) for a wide a and a Q16.16 c: one int64 product when it cannot
  * overflow (-2^41 <= a < 2^41 and -2^21 <= c < 2^21, so |a c| <= 2^62: ordinary bodies),
@@ -774,11 +773,12 @@ static inline int64_t relative_speed(const velocity *A, const velocity *B, pg_di
  * c (n . r) + s (r x n), two products of the step's constants nr = n . r and xr = r x n
  * (constraint_point). A round side's anchor does not turn with it: its q is the identity
  * (turn_of). At the step's start (q = 1: c = 2^30, s = 0) it is nr 2^30 exactly.
- * |(c, s)| <= 2^30 (1 + 2^-29) and |(nr, xr)| <= 2^31.5 (each a pg_fix), so the sum is
- * below 2^61.5. */
+ * |(c, s)| <= 2^30 (1 + 2^-29) and |(nr, xr)|, r's length rounded, is at most 2^31.5
+ * (a restored snapshot's anchors may sit at the edge of the range), so the sum is below
+ * 2^61.5. */
 static const pg_rot no_turn = { PG_ROT_ONE, 0 };
 static inline const pg_rot *turn_of(const solver_body *b, int round) { return round ? &no_turn : &b->dq; }
-static inline int64_t anchor_along(const pg_rot *q, pg_fix nr, pg_fix xr) { return (int64_t)q->c * nr + (int64_t)q->s * xr; }
+static inline int64_t anchor_along(const pg_rot *q, int64_t nr, int64_t xr) { return q->c * nr + q->s * xr; }
 
 static inline int64_t clamp_lambda(int64_t acc, int64_t lo, int64_t hi) { return acc < lo ? lo : acc > hi ? hi : acc; }
 
@@ -1453,20 +1453,20 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
             int64_t nrA = (int64_t)c->n.x * rA.x + (int64_t)c->n.y * rA.y;
             int64_t nrB = (int64_t)c->n.x * rB.x + (int64_t)c->n.y * rB.y;
             int64_t along;
-            p->nrA = pg__sat64(row_round(nrA, 30));
-            p->nrB = pg__sat64(row_round(nrB, 30));
-            p->xrA = cross_rd(rA, c->n);
-            p->xrB = cross_rd(rB, c->n);
+            p->nrA = row_round(nrA, 30);
+            p->nrB = row_round(nrB, 30);
+            p->xrA = row_round((int64_t)rA.x * c->n.y - (int64_t)rA.y * c->n.x, 30); /* r x n */
+            p->xrB = row_round((int64_t)rB.x * c->n.y - (int64_t)rB.y * c->n.x, 30);
             /* what normal_separation finds before anything moves (dp = 0, dq = 1: each
              * anchor_along is nr 2^30), for the first substep's soft pass */
-            along = (int64_t)p->nrB - p->nrA;
+            along = p->nrB - p->nrA;
             p->adjusted_separation = pg__sat64((int64_t)cp->separation - along);
             p->separation = along + p->adjusted_separation;
-            p->ctA = (pg_fix)row_round(-nrA, 30); /* cross_rd(rA, t) */
+            p->ctA = (pg_fix)row_round(-nrA, 30); /* rA x t */
             p->ctB = (pg_fix)row_round(-nrB, 30);
         }
-        p->cnA = turnA ? p->xrA : 0;
-        p->cnB = turnB ? p->xrB : 0;
+        p->cnA = turnA ? pg__sat64(p->xrA) : 0;
+        p->cnB = turnB ? pg__sat64(p->xrB) : 0;
         if (p->cnA != 0 || p->cnB != 0) c->normal_linear = 0;
         p->normal_impulse = (pg_fix)clamp_lambda(cp->normal_impulse, 0, LAMBDA_MAX);
         p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
