@@ -20,7 +20,13 @@
  *   --warmup-runs K       K whole untimed runs before the timed ones (default 0). For the
  *                         wasm build under node: V8 compiles wasm in tiers while it runs,
  *                         so the first runs of a short scene measure the compiler, not the
- *                         code (tools/bench/peers gives node's engines 2).
+ *                         code.
+ *   --warmup-seconds S    untimed runs go on until S seconds (0 to 60) have passed as well
+ *                         (default 0). V8 compiles a large function in the background, on
+ *                         the other core, and until that is done the runs are slow or share
+ *                         the core with the compiler: a time, not a count of runs, says when
+ *                         a scene is warm whatever it costs (tools/bench/peers gives node's
+ *                         engines 2 runs and 1 s). The JSON's warmup_runs is how many ran.
  *   --substeps N, --contact-hertz HZ, --damping-ratio Z
  *                         world settings instead of the defaults (4, 30, 10; decimals are
  *                         read exactly as Q16.16), to see what a setting costs and whether
@@ -74,6 +80,7 @@ typedef struct result {
     const char *scene;
     const char *label;      /* effects mode: the row's name */
     uint32_t count, bodies, steps, warmup, repeat, effects;
+    uint32_t warmup_runs;   /* untimed whole runs made (--warmup-runs, --warmup-seconds) */
     double ms_per_step, steps_per_second, ms_min, ms_max;
     int stands;             /* pyramid and stack: top displacement is meaningful */
     double top_disp, dx, dy, angle_deg;
@@ -137,6 +144,7 @@ static int parse_u32(const char *text, uint32_t *out)
 
 /* ---- one measurement ------------------------------------------------------------------ */
 static uint32_t g_warmup_runs; /* --warmup-runs: whole runs before the timed ones */
+static uint32_t g_warmup_s;    /* --warmup-seconds: and until this much time has passed */
 static settings g_settings;    /* --substeps, --contact-hertz, --damping-ratio */
 
 /* The step (1-based) after which no body was awake, 0 if none within `steps`: an extra
@@ -165,7 +173,8 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
     double runs[MAX_REPEAT];
     pg_world_def def;
     size_t size;
-    uint32_t r, i;
+    uint32_t r = 0, i, warm = 0;
+    double warm_start;
     if (count == 0) count = default_count(scene);
     if (steps == 0) steps = default_steps(scene);
     if (repeat == 0) repeat = DEFAULT_REPEAT;
@@ -194,7 +203,10 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
         fprintf(stderr, "pogon-bench: %s %u: invalid world settings: %s\n", scene, count, why != NULL ? why : "too large");
         return 1;
     }
-    for (r = 0; r < g_warmup_runs + repeat; ++r) {
+    warm_start = now_ms();
+    while (r < repeat) {
+        /* untimed until both the runs and the time of the warm-up are done */
+        int warming = warm < g_warmup_runs || now_ms() - warm_start < 1000.0 * (double)g_warmup_s;
         pg_scene sc;
         pg_result pr;
         pg_world_stats st;
@@ -224,11 +236,12 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
             free(memory);
             return 1;
         }
-        if (r < g_warmup_runs) {
+        if (warming) {
+            ++warm;
             free(memory);
             continue;
         }
-        runs[r - g_warmup_runs] = (t1 - t0) / (double)steps;
+        runs[r++] = (t1 - t0) / (double)steps;
         /* every run is bit-identical, so the last one's state is the state */
         {
             pg_vec2 p = pg_body_position(sc.world, sc.top);
@@ -246,6 +259,7 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
         res->speed_clamps = st.speed_clamps;
         free(memory);
     }
+    res->warmup_runs = warm;
     if (res->stands && (effects & PG_EFFECT_SLEEPING) != 0) res->asleep_step = find_asleep_step(scene, count, steps, &def, size);
     qsort(runs, repeat, sizeof runs[0], cmp_double);
     res->ms_min = runs[0];
@@ -258,9 +272,9 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
 /* ---- output --------------------------------------------------------------------------- */
 static void print_json(const result *r)
 {
-    printf("{\"engine\":\"pogon\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":%u,\"warmup_runs\":%u,\"repeat\":%u,"
-           "\"effects\":%u,\"trig_table_bits\":%d,",
-           r->scene, r->count, r->bodies, r->steps, r->warmup, g_warmup_runs, r->repeat, r->effects, PG_TRIG_TABLE_BITS);
+    printf("{\"engine\":\"pogon\",\"scene\":\"%s\",\"count\":%u,\"bodies\":%u,\"steps\":%u,\"warmup\":%u,\"warmup_runs\":%u,"
+           "\"warmup_seconds\":%u,\"repeat\":%u,\"effects\":%u,\"trig_table_bits\":%d,",
+           r->scene, r->count, r->bodies, r->steps, r->warmup, r->warmup_runs, g_warmup_s, r->repeat, r->effects, PG_TRIG_TABLE_BITS);
     {
         char hz[PG_FIX_FORMAT_MAX], zeta[PG_FIX_FORMAT_MAX];
         pg_fix_format(r->contact_hertz, hz, sizeof hz);
@@ -655,7 +669,7 @@ static int mode_compare(const char *argv0, const options *o)
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--json] [--no-sleep]\n"
+            "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--warmup-seconds S] [--json] [--no-sleep]\n"
             "                         [--substeps N] [--contact-hertz HZ] [--damping-ratio Z]\n"
             "       pogon-bench all | effects [SCENE] | memory | snapshot | compare   [options]\n"
             "scenes: pyramid (count = rows, default 20), stack (boxes, default 20), rain (circles, default 1000)\n"
@@ -691,6 +705,14 @@ int main(int argc, char **argv)
                 return 2;
             }
             g_warmup_runs = v;
+            ++i;
+        } else if (strcmp(a, "--warmup-seconds") == 0) {
+            uint32_t v;
+            if (i + 1 >= argc || !parse_u32(argv[i + 1], &v) || v > 60) {
+                fprintf(stderr, "pogon-bench: --warmup-seconds needs an integer from 0 to 60\n");
+                return 2;
+            }
+            g_warmup_s = v;
             ++i;
         } else if (strcmp(a, "--substeps") == 0) {
             uint32_t v;

@@ -2,7 +2,8 @@
 // harness.js — the pogon-bench scenes in matter.js (npm matter-js, the version pinned in
 // package.json; `npm ci` here installs it), for comparison. Run by tools/bench/peers.
 //
-// Usage: node harness.js SCENE [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--json]
+// Usage: node harness.js SCENE [--count N] [--steps N] [--repeat R] [--warmup-runs K]
+//                        [--warmup-seconds S] [--json]
 //                        [--variant defaults|best] [--sleep|--no-sleep]
 //                        [--position-iterations N] [--velocity-iterations N]
 //        node harness.js all [options]
@@ -46,12 +47,13 @@ const SCALE = 100; // units per metre
 const FRICTION = 0.6;
 
 function usage(stream) {
-    stream.write('usage: node harness.js pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--json]\n' +
+    stream.write('usage: node harness.js pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--warmup-runs K]\n' +
+                 '         [--warmup-seconds S] [--json]\n' +
                  '         [--variant defaults|best] [--sleep|--no-sleep] [--position-iterations N] [--velocity-iterations N]\n');
 }
 
 function parseArgs(argv) {
-    const o = { mode: null, count: 0, steps: 0, repeat: 3, warmupRuns: 0, json: false, variant: 'defaults', sleep: null,
+    const o = { mode: null, count: 0, steps: 0, repeat: 3, warmupRuns: 0, warmupSeconds: 0, json: false, variant: 'defaults', sleep: null,
                 positionIterations: 0, velocityIterations: 0 };
     for (let i = 0; i < argv.length; ++i) {
         const a = argv[i];
@@ -76,6 +78,12 @@ function parseArgs(argv) {
             const v = Number(argv[++i]);
             if (!Number.isInteger(v) || v < 0 || v > 100) throw new Error('--warmup-runs needs an integer from 0 to 100');
             o.warmupRuns = v;
+        } else if (a === '--warmup-seconds') {
+            // and untimed runs until this much time has passed: V8 compiles in the
+            // background, and a time says when a scene is warm whatever it costs
+            const v = Number(argv[++i]);
+            if (!Number.isInteger(v) || v < 0 || v > 60) throw new Error('--warmup-seconds needs an integer from 0 to 60');
+            o.warmupSeconds = v;
         } else if (a === '--help' || a === '-h') {
             usage(process.stdout);
             process.exit(0);
@@ -158,9 +166,13 @@ function run(scene, o, countOverride) {
     const s = settingsFor(scene, o);
     const runs = [];
     const res = { scene, count, steps, repeat, s, stands: !rain };
-    const warm = o.warmupRuns || 0;
-    res.warmupRuns = warm;
-    for (let r = 0; r < warm + repeat; ++r) {
+    const warmRuns = o.warmupRuns || 0, warmNs = BigInt(o.warmupSeconds || 0) * 1000000000n;
+    const warmStart = process.hrtime.bigint();
+    let warm = 0;
+    res.warmupSeconds = o.warmupSeconds || 0;
+    while (runs.length < repeat) {
+        // untimed until both the runs and the time of the warm-up are done
+        const warming = warm < warmRuns || process.hrtime.bigint() - warmStart < warmNs;
         const engine = Engine.create({
             positionIterations: s.positionIterations,
             velocityIterations: s.velocityIterations,
@@ -178,7 +190,10 @@ function run(scene, o, countOverride) {
         const t0 = process.hrtime.bigint();
         for (let i = 0; i < steps; ++i) Engine.update(engine, dt);
         const t1 = process.hrtime.bigint();
-        if (r < warm) continue;
+        if (warming) {
+            ++warm;
+            continue;
+        }
         runs.push(Number(t1 - t0) / 1e6 / steps);
         res.dx = (top.position.x - x0) / SCALE;
         res.dy = -(top.position.y - y0) / SCALE;
@@ -188,6 +203,7 @@ function run(scene, o, countOverride) {
         res.contacts = engine.pairs.list.length;
         res.touching = engine.pairs.list.filter((p) => p.isActive).length;
     }
+    res.warmupRuns = warm;
     runs.sort((a, b) => a - b);
     const k = runs.length;
     res.ms = (k & 1) ? runs[k >> 1] : 0.5 * (runs[k / 2 - 1] + runs[k / 2]);
@@ -200,7 +216,8 @@ function run(scene, o, countOverride) {
 function printJson(r, variant) {
     const f = (v, d) => v.toFixed(d);
     let line = `{"engine":"matter-js-${Matter.version}","variant":"${variant}","scene":"${r.scene}","count":${r.count},` +
-        `"bodies":${r.bodies},"steps":${r.steps},"warmup":0,"warmup_runs":${r.warmupRuns},"repeat":${r.repeat},` +
+        `"bodies":${r.bodies},"steps":${r.steps},"warmup":0,"warmup_runs":${r.warmupRuns},"warmup_seconds":${r.warmupSeconds},` +
+        `"repeat":${r.repeat},` +
         `"position_iterations":${r.s.positionIterations},"velocity_iterations":${r.s.velocityIterations},` +
         `"sleeping":${r.s.enableSleeping},"node":"${process.version}",` +
         `"ms_per_step":${f(r.ms, 6)},"ms_min":${f(r.msMin, 6)},"ms_max":${f(r.msMax, 6)},"steps_per_second":${f(r.sps, 2)},`;
