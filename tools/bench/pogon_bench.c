@@ -698,21 +698,15 @@ int main(int argc, char **argv)
             else if (a[2] == 's') o.steps = v;
             else o.repeat = v > MAX_REPEAT ? MAX_REPEAT : v;
             ++i;
-        } else if (strcmp(a, "--warmup-runs") == 0) {
-            uint32_t v;
-            if (i + 1 >= argc || !parse_u32(argv[i + 1], &v) || v > 100) {
-                fprintf(stderr, "pogon-bench: --warmup-runs needs an integer from 0 to 100\n");
+        } else if (strcmp(a, "--warmup-runs") == 0 || strcmp(a, "--warmup-seconds") == 0) {
+            int runs = strcmp(a, "--warmup-runs") == 0;
+            uint32_t v, most = runs ? 100u : 60u;
+            if (i + 1 >= argc || !parse_u32(argv[i + 1], &v) || v > most) {
+                fprintf(stderr, "pogon-bench: %s needs an integer from 0 to %u\n", a, most);
                 return 2;
             }
-            g_warmup_runs = v;
-            ++i;
-        } else if (strcmp(a, "--warmup-seconds") == 0) {
-            uint32_t v;
-            if (i + 1 >= argc || !parse_u32(argv[i + 1], &v) || v > 60) {
-                fprintf(stderr, "pogon-bench: --warmup-seconds needs an integer from 0 to 60\n");
-                return 2;
-            }
-            g_warmup_s = v;
+            if (runs) g_warmup_runs = v;
+            else g_warmup_s = v;
             ++i;
         } else if (strcmp(a, "--substeps") == 0) {
             uint32_t v;
