@@ -425,7 +425,6 @@ static pg_fix k_ratio(denominator t, denominator n)
     return r > (uint64_t)PG_FIX_MAX ? PG_FIX_MAX : (pg_fix)r;
 }
 
-
 /* round(a c / 2^16) for a wide a and a Q16.16 c: one int64 product when it cannot
  * overflow (-2^41 <= a < 2^41 and -2^21 <= c < 2^21, so |a c| <= 2^62: ordinary bodies),
  * the 128-bit path otherwise; both are exact and round alike. The range test is one
@@ -837,10 +836,10 @@ static inline int64_t mass_scale_times(int32_t m, int64_t x)
 PG__INLINE_PASS int64_t normal_separation(const constraint *c, const solver_body *A, const solver_body *B, constraint_point *p,
                                           int use_bias)
 {
-    int64_t s;
+    int64_t s, lin;
     if (use_bias) return p->separation;
-    s = row_round(c->n.x * ((int64_t)B->dp.x - A->dp.x) + c->n.y * ((int64_t)B->dp.y - A->dp.y) +
-                      anchor_along(turn_of(B, c->round_b), p->nrB, p->xrB) - anchor_along(turn_of(A, c->round_a), p->nrA, p->xrA), 30) +
+    lin = c->n.x * ((int64_t)B->dp.x - A->dp.x) + c->n.y * ((int64_t)B->dp.y - A->dp.y);
+    s = row_round(lin + anchor_along(turn_of(B, c->round_b), p->nrB, p->xrB) - anchor_along(turn_of(A, c->round_a), p->nrA, p->xrA), 30) +
         p->adjusted_separation;
     p->separation = s;
     return s;
@@ -1448,8 +1447,9 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
             pg_vec2 rB = pg_v2(pg__sat64((int64_t)cp->point.x + hx - B_center.x), pg__sat64((int64_t)cp->point.y + hy - B_center.y));
             /* in int64: a restored snapshot may hold any contact point, and anchors
              * saturated at the edge of the range are up to 2^32 apart; n . r and r x n are
-             * below 2^61.5 in Q46, saturated to pg_fix. r x t = -(n . r) exactly (t = (n.y,
-             * -n.x)): the tangent lever arms round the same products */
+             * below 2^61.5 in Q46 and 2^31.5 rounded to Q16, kept in int64 (only the lever
+             * arms, pg_fix, saturate). r x t = -(n . r) exactly (t = (n.y, -n.x)): the
+             * tangent lever arms round the same products */
             int64_t nrA = (int64_t)c->n.x * rA.x + (int64_t)c->n.y * rA.y;
             int64_t nrB = (int64_t)c->n.x * rB.x + (int64_t)c->n.y * rB.y;
             int64_t along;
