@@ -162,10 +162,12 @@
  * TWINS: where both sides have the same inverse mass (equal bodies, as in a stack or a
  * pyramid of one box; a side that cannot move against a kinematic one) kA = kB, so every
  * row's lA = lB (prepare shares them), and a row's linear change round(lambda l) is the
- * same number for both bodies: it is computed once and given to both (c->twin). The same
- * bits with two products a row fewer: 1.6 % of the awake pyramid's instructions with
- * clang, 1.8 % with gcc (callgrind: 350.4 -> 344.9 M and 351.6 -> 345.1 M per 100 steps),
- * 1.7 % of its time under node.
+ * same number for both bodies: B takes A's instead of computing its own (c->twin, in the
+ * block's, the friction row's and the warm start's updates). The same bits with two
+ * products a row fewer: 1.6 % of the awake pyramid's instructions with clang, 1.8 % with
+ * gcc when first written as separate twin paths (callgrind: 350.4 -> 344.9 M and 351.6 ->
+ * 345.1 M per 100 steps), 1.7 % of its time under node; as one path with the choice at
+ * B's two linear lines, 0.6 % and 0.3 % fewer again.
  *
  * SYMMETRY: rows solved one after the other alternate their order (even substeps 0 then
  * 1, odd ones 1 then 0); the block is the same in either order; and a mirrored product
@@ -742,18 +744,6 @@ static inline void apply_row(velocity *A, velocity *B, int64_t lambda, int32_t l
     B->w += row_round(lambda * gB, 24);
 }
 
-/* apply_row for TWINS (lA = lB): the linear change is rounded once and given to both. */
-static inline void apply_row_twin(velocity *A, velocity *B, int64_t lambda, int32_t l_x, int32_t l_y, int32_t gA, int32_t gB)
-{
-    int64_t x = row_round(lambda * l_x, 30), y = row_round(lambda * l_y, 30);
-    A->x -= x;
-    A->y -= y;
-    A->w -= row_round(lambda * gA, 24);
-    B->x += x;
-    B->y += y;
-    B->w += row_round(lambda * gB, 24);
-}
-
 /* The angular part of relative_speed (0 when cA = cB = 0), rounded ties away from zero
  * (ROUNDING: lever arms of 0.5 m make ties common here). */
 static inline int64_t angular_speed(const velocity *A, const velocity *B, pg_fix cA, pg_fix cB)
@@ -802,8 +792,17 @@ PG__INLINE_ROW void solve_friction(velocity *va, velocity *vb, constraint_point 
         acc = clamp_lambda((int64_t)p->tangent_impulse - relative_speed(va, vb, t, p->ctA, p->ctB), -max_f, max_f);
     }
     if (acc == p->tangent_impulse) return; /* held at its bound: nothing changes */
-    if (twin) apply_row_twin(va, vb, acc - p->tangent_impulse, p->trow.lA_x, p->trow.lA_y, p->trow.gA, p->trow.gB);
-    else apply_row(va, vb, acc - p->tangent_impulse, p->trow.lA_x, p->trow.lA_y, p->trow.lB_x, p->trow.lB_y, p->trow.gA, p->trow.gB);
+    {
+        /* TWINS: B's linear change is A's */
+        int64_t lambda = acc - p->tangent_impulse;
+        int64_t ax = row_round(lambda * p->trow.lA_x, 30), ay = row_round(lambda * p->trow.lA_y, 30);
+        va->x -= ax;
+        va->y -= ay;
+        va->w -= row_round(lambda * p->trow.gA, 24);
+        vb->x += twin ? ax : row_round(lambda * p->trow.lB_x, 30);
+        vb->y += twin ? ay : row_round(lambda * p->trow.lB_y, 30);
+        vb->w += row_round(lambda * p->trow.gB, 24);
+    }
     p->tangent_impulse = (pg_fix)acc;
 }
 
@@ -941,23 +940,16 @@ PG__INLINE_ROW void normal_apply_pair(velocity *va, velocity *vb, constraint_poi
     d1 = acc1 - p1->normal_impulse;
     p0->normal_impulse = (pg_fix)acc0;
     p1->normal_impulse = (pg_fix)acc1;
-    if (twin) {
-        int64_t x = row_round(d0 * p0->nrow.lA_x, 30) + row_round(d1 * p1->nrow.lA_x, 30);
-        int64_t y = row_round(d0 * p0->nrow.lA_y, 30) + row_round(d1 * p1->nrow.lA_y, 30);
-        va->x -= x;
-        va->y -= y;
+    {
+        int64_t ax = row_round(d0 * p0->nrow.lA_x, 30) + row_round(d1 * p1->nrow.lA_x, 30);
+        int64_t ay = row_round(d0 * p0->nrow.lA_y, 30) + row_round(d1 * p1->nrow.lA_y, 30);
+        va->x -= ax;
+        va->y -= ay;
         va->w -= row_round(d0 * p0->nrow.gA, 24) + row_round(d1 * p1->nrow.gA, 24);
-        vb->x += x;
-        vb->y += y;
+        vb->x += twin ? ax : row_round(d0 * p0->nrow.lB_x, 30) + row_round(d1 * p1->nrow.lB_x, 30);
+        vb->y += twin ? ay : row_round(d0 * p0->nrow.lB_y, 30) + row_round(d1 * p1->nrow.lB_y, 30);
         vb->w += row_round(d0 * p0->nrow.gB, 24) + row_round(d1 * p1->nrow.gB, 24);
-        return;
     }
-    va->x -= row_round(d0 * p0->nrow.lA_x, 30) + row_round(d1 * p1->nrow.lA_x, 30);
-    va->y -= row_round(d0 * p0->nrow.lA_y, 30) + row_round(d1 * p1->nrow.lA_y, 30);
-    va->w -= row_round(d0 * p0->nrow.gA, 24) + row_round(d1 * p1->nrow.gA, 24);
-    vb->x += row_round(d0 * p0->nrow.lB_x, 30) + row_round(d1 * p1->nrow.lB_x, 30);
-    vb->y += row_round(d0 * p0->nrow.lB_y, 30) + row_round(d1 * p1->nrow.lB_y, 30);
-    vb->w += row_round(d0 * p0->nrow.gB, 24) + row_round(d1 * p1->nrow.gB, 24);
 }
 
 /* The approach speed of a point that first pushes now, at relative normal speed rel:
@@ -1222,24 +1214,13 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
          * impulse is 0, or a side's g = 0 where normal_linear, adds round(0) = 0) */
         const constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
         int64_t n0 = p0->normal_impulse, n1 = p1->normal_impulse, t0 = p0->tangent_impulse;
-        if (c->twin) {
-            int64_t x = row_round(n0 * p0->nrow.lA_x, 30) + row_round(n1 * p1->nrow.lA_x, 30) + row_round(t0 * p0->trow.lA_x, 30);
-            int64_t y = row_round(n0 * p0->nrow.lA_y, 30) + row_round(n1 * p1->nrow.lA_y, 30) + row_round(t0 * p0->trow.lA_y, 30);
-            va.x -= x;
-            va.y -= y;
-            va.w -= row_round(n0 * p0->nrow.gA, 24) + row_round(n1 * p1->nrow.gA, 24) + row_round(t0 * p0->trow.gA, 24);
-            vb.x += x;
-            vb.y += y;
-            vb.w += row_round(n0 * p0->nrow.gB, 24) + row_round(n1 * p1->nrow.gB, 24) + row_round(t0 * p0->trow.gB, 24);
-            store_velocity(A, &va);
-            store_velocity(B, &vb);
-            return;
-        }
-        va.x -= row_round(n0 * p0->nrow.lA_x, 30) + row_round(n1 * p1->nrow.lA_x, 30) + row_round(t0 * p0->trow.lA_x, 30);
-        va.y -= row_round(n0 * p0->nrow.lA_y, 30) + row_round(n1 * p1->nrow.lA_y, 30) + row_round(t0 * p0->trow.lA_y, 30);
+        int64_t ax = row_round(n0 * p0->nrow.lA_x, 30) + row_round(n1 * p1->nrow.lA_x, 30) + row_round(t0 * p0->trow.lA_x, 30);
+        int64_t ay = row_round(n0 * p0->nrow.lA_y, 30) + row_round(n1 * p1->nrow.lA_y, 30) + row_round(t0 * p0->trow.lA_y, 30);
+        va.x -= ax;
+        va.y -= ay;
         va.w -= row_round(n0 * p0->nrow.gA, 24) + row_round(n1 * p1->nrow.gA, 24) + row_round(t0 * p0->trow.gA, 24);
-        vb.x += row_round(n0 * p0->nrow.lB_x, 30) + row_round(n1 * p1->nrow.lB_x, 30) + row_round(t0 * p0->trow.lB_x, 30);
-        vb.y += row_round(n0 * p0->nrow.lB_y, 30) + row_round(n1 * p1->nrow.lB_y, 30) + row_round(t0 * p0->trow.lB_y, 30);
+        vb.x += c->twin ? ax : row_round(n0 * p0->nrow.lB_x, 30) + row_round(n1 * p1->nrow.lB_x, 30) + row_round(t0 * p0->trow.lB_x, 30);
+        vb.y += c->twin ? ay : row_round(n0 * p0->nrow.lB_y, 30) + row_round(n1 * p1->nrow.lB_y, 30) + row_round(t0 * p0->trow.lB_y, 30);
         vb.w += row_round(n0 * p0->nrow.gB, 24) + row_round(n1 * p1->nrow.gB, 24) + row_round(t0 * p0->trow.gB, 24);
     } else {
         for (k = 0; k < c->count; ++k) {
