@@ -72,7 +72,7 @@ int desktop_check_image(const char *path, const desktop_view *view, const pg_wor
         desktop_view_to_screen(view, c, &sx, &sy);
         x = (int)sx;
         y = (int)sy;
-        if (x < 0 || y < DESKTOP_OVERLAY_HEIGHT || x >= img->w || y >= img->h) continue;
+        if (x < 0 || y < DESKTOP_OVERLAY_HEIGHT || x >= img->w || y >= img->h - DESKTOP_TIMELINE_HEIGHT) continue;
         if (pg_world_query_point(world, c, hits, 4, &hit_count) != PG_OK || hit_count != 1) continue;
         n++;
         bodies_seen++;
@@ -85,7 +85,7 @@ int desktop_check_image(const char *path, const desktop_view *view, const pg_wor
         }
     }
     /* Where no body is within 3 px, the background shows. */
-    for (y = DESKTOP_OVERLAY_HEIGHT + 4; y < img->h - 4 && ok; y += 7) {
+    for (y = DESKTOP_OVERLAY_HEIGHT + 4; y < img->h - DESKTOP_TIMELINE_HEIGHT - 4 && ok; y += 7) {
         for (x = 4; x < img->w - 4 && ok; x += 7) {
             pg_aabb box;
             pg_body_id hit;

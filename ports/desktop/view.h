@@ -8,6 +8,7 @@
 #define DESKTOP_BACKGROUND 0xf4f1eau   /* window background, 0xRRGGBB */
 #define DESKTOP_OVERLAY_LINES 3        /* text lines at the top (8 px font, 10 px a line) */
 #define DESKTOP_OVERLAY_HEIGHT (DESKTOP_OVERLAY_LINES * 10 + 6)
+#define DESKTOP_TIMELINE_HEIGHT 14     /* the playback bar at the bottom */
 
 typedef struct desktop_view {
     double center_x, center_y;  /* world point at the window centre, m */

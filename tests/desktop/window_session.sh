@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# window_session.sh — the desktop window driven like a user, under a virtual X server.
+#
+# Usage (CTest runs it inside xvfb-run): window_session.sh DESKTOP REPLAY_TOOL SCENE WORKDIR
+# Starts pogon-desktop on SCENE, then with xdotool: adds a ball and a box, selects the
+# ball with the move tool and drags it, pushes it with the arrow keys, toggles gravity
+# off and on, pauses, takes a screenshot (F12), steps once (N), takes another, and closes
+# the window (Escape). Then it checks that
+#   - the replay the program wrote verifies (pogon-replay verify) and holds the adds,
+#     the drag and key pushes (set_linear_velocity / apply_force), the gravity toggles;
+#   - the two screenshots are of consecutive frames (a single step while paused);
+#   - each screenshot shows the bodies where the replay has them at its frame
+#     (pogon-desktop --headless --play --until F --check-image).
+set -euo pipefail
+desktop=$1 replay=$2 scene=$3 work=$4
+rm -rf "$work"; mkdir -p "$work"
+log=$work/window.log
+
+# The default view: world (0, 9) at the centre of 960x600, 22 px per metre.
+px() { awk -v x="$1" 'BEGIN { printf "%d", 480 + x * 22 }'; }
+py() { awk -v y="$1" 'BEGIN { printf "%d", 300 - (y - 9) * 22 }'; }
+
+"$desktop" --scene "$scene" -o "$work/session.pgr" --screenshot "$work/shot" >"$log" 2>&1 &
+pid=$!
+trap 'kill $pid 2>/dev/null || true' EXIT
+wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^pogon$' | head -n 1)
+[ -n "$wid" ] || { echo "no window"; cat "$log"; exit 1; }
+xdotool windowfocus --sync "$wid" || true
+act() { xdotool "$@"; sleep 0.25; }
+
+act key --window "$wid" 3                                        # tool 3: ball
+act mousemove --window "$wid" "$(px -8)" "$(py 6)" click 1       # a ball at (-8, 6)
+act key --window "$wid" 5                                        # tool 5: box
+act mousemove --window "$wid" "$(px 0)" "$(py 9)" click 1        # a box at (0, 9)
+sleep 1.5                                                        # let them fall
+act key --window "$wid" 1                                        # tool 1: move
+act mousemove --window "$wid" "$(px -10)" "$(py 0.5)"            # the scene's ball rests at (-10, 0.5)
+act mousedown --window "$wid" 1                                  # select it and hold it
+for x in -9.5 -9 -8.5 -8 -7.5 -7; do act mousemove --window "$wid" "$(px "$x")" "$(py 2)"; done
+act mouseup --window "$wid" 1
+act keydown --window "$wid" Right; sleep 0.5; act keyup --window "$wid" Right   # push the selected body
+act key --window "$wid" g                                        # gravity off
+sleep 0.5
+act key --window "$wid" g                                        # gravity on
+sleep 0.5
+act key --window "$wid" p                                        # pause
+act key --window "$wid" F12                                      # screenshot of frame F
+act key --window "$wid" n                                        # one step
+act key --window "$wid" F12                                      # screenshot of frame F + 1
+act key --window "$wid" Escape                                   # close
+for _ in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+wait $pid
+trap - EXIT
+cat "$log"
+
+file=$work/session.pgr
+grep -q "recording to $file" "$log"
+grep -q "recorded [0-9]* frames to $file" "$log"
+"$replay" verify "$file"
+info=$("$replay" info "$file")
+count() { awk -v k="$1" '$1 == k { print $2 }' <<<"$info"; }
+makes=$(count make); grav=$(count set_gravity); vel=$(count set_linear_velocity); force=$(count apply_force)
+echo "make ${makes:-0}, set_gravity ${grav:-0}, set_linear_velocity ${vel:-0}, apply_force ${force:-0}"
+[ "${makes:-0}" -ge 2 ] || { echo "FAIL: expected the ball and the box to be added (2 make commands)"; exit 1; }
+[ "${grav:-0}" -ge 2 ] || { echo "FAIL: expected gravity off and on (2 set_gravity commands)"; exit 1; }
+[ "$(( ${vel:-0} + ${force:-0} ))" -ge 1 ] || { echo "FAIL: expected the drag or the key push as commands"; exit 1; }
+
+mapfile -t shots < <(sed -n 's/.*screenshot of frame \([0-9]*\) written to \(.*\)$/\1 \2/p' "$log")
+[ ${#shots[@]} -eq 2 ] || { echo "FAIL: expected 2 screenshots, got ${#shots[@]}"; exit 1; }
+f1=${shots[0]%% *} f2=${shots[1]%% *}
+[ "$f2" -eq $(( f1 + 1 )) ] || { echo "FAIL: one step while paused should go from frame $f1 to $(( f1 + 1 )), got $f2"; exit 1; }
+for s in "${shots[@]}"; do
+  "$desktop" --headless --play "$file" --until "${s%% *}" --check-image "${s#* }"
+done
+echo "window session: OK"
