@@ -1,56 +1,7 @@
 /* test_app_replay.c — the recording reproduces the session, playback of a corpus replay,
  * damaged files, bad arguments, and the picker's scene files. */
 #include "app_test_util.h"
-
-/* A session that uses every kind of world change the app makes. */
-static void scripted_session(pga_app *app)
-{
-    pga_params p = pga_default_params();
-    int f;
-    for (f = 0; f < 200; ++f) {
-        switch (f) {
-        case 2: pga_set_tool(app, PGA_TOOL_BOX); pga_pointer_down(app, at(-8, 6)); break;
-        case 4: pga_set_tool(app, PGA_TOOL_BALL); pga_pointer_down(app, at(-4, 7)); break;
-        case 6: pga_set_tool(app, PGA_TOOL_CAPSULE); pga_pointer_down(app, at(0, 8)); break;
-        case 8: pga_set_tool(app, PGA_TOOL_STAR); pga_pointer_down(app, at(4, 9)); break;
-        case 10:
-            pga_set_tool(app, PGA_TOOL_TRIANGLE);
-            pga_pointer_down(app, at(8, 6));
-            pga_pointer_down(app, at(10, 6));
-            pga_pointer_down(app, at(9, 8));
-            break;
-        case 12:
-            pga_set_tool(app, PGA_TOOL_WALL);
-            pga_pointer_down(app, at(-18, 12));
-            pga_pointer_down(app, at(-12, 10));
-            break;
-        case 20: pga_key(app, PGA_KEY_LEFT, 1); break;
-        case 50: pga_key(app, PGA_KEY_LEFT, 0); pga_key(app, PGA_KEY_UP, 1); break;
-        case 60: pga_key(app, PGA_KEY_UP, 0); break;
-        case 70: pga_toggle_gravity(app); break;
-        case 80:
-            pga_set_tool(app, PGA_TOOL_MOVE);
-            pga_pointer_down(app, at(-2, 0.5)); /* the demo's box */
-            pga_pointer_move(app, at(0, 5));
-            break;
-        case 100: pga_pointer_up(app, at(0, 5)); pga_toggle_gravity(app); break;
-        case 110: pga_set_effects(app, PG_EFFECTS_ALL & ~PG_EFFECT_SLEEPING); break;
-        case 120: /* changes while paused are logged with the next step */
-            pga_set_paused(app, 1);
-            p.nudge = 1;
-            pga_set_params(app, &p);
-            pga_set_tool(app, PGA_TOOL_BOX);
-            pga_pointer_down(app, at(0, 5));
-            break;
-        case 125: pga_set_tool(app, PGA_TOOL_DELETE); pga_pointer_down(app, at(-10, 0.5)); break;
-        case 130: pga_step_once(app); break;
-        case 140: pga_set_paused(app, 0); break;
-        case 150: pga_set_selected_material(app, PG_FIX_C(2), PG_FIX_ONE / 4, PG_FIX_ONE / 2); break;
-        default: break;
-        }
-        pga_frame(app);
-    }
-}
+#include "app_session.h"
 
 static void test_recording_verifies(void **state)
 {
@@ -61,7 +12,7 @@ static void test_recording_verifies(void **state)
     uint64_t hash = 0;
     uint32_t played;
     (void)state;
-    scripted_session(app);
+    app_session_run(app);
     assert_int_equal(pga_recording(app, &rec, &size), PG_OK);
     copy = (uint8_t *)malloc(size);
     memcpy(copy, rec, size);
@@ -100,7 +51,7 @@ static void test_playback_of_own_recording(void **state)
     pga_playback pb;
     uint64_t live_hash;
     (void)state;
-    scripted_session(app);
+    app_session_run(app);
     live_hash = pga_state_hash(app);
     assert_int_equal(pga_recording(app, &rec, &size), PG_OK);
     copy = (uint8_t *)malloc(size);
