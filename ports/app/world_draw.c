@@ -2,23 +2,20 @@
  *
  * Bodies are enumerated with one AABB query over the whole fixed-point range, which
  * returns them in ascending slot order; a body with no shape has no proxy and is not
- * drawn anyway.
+ * drawn anyway. Colours and flags follow pga_draw_list's rules (app_draw.c): the colour
+ * in user_data when PGA_COLOR_FLAG is set, else pga__default_color.
  */
 #include "world_draw.h"
 
+#include "app_internal.h"
+
 #include <stdlib.h>
 
-uint32_t pga_world_draw_color(pg_body_type type, pg_shape_kind kind, int32_t vertex_count)
+uint32_t pga_world_draw_color(const pg_world *world, pg_body_id body, pg_shape_kind kind, uint32_t shape_count)
 {
-    if (type == PG_BODY_STATIC) return 0x6b7280u;
-    if (type == PG_BODY_KINEMATIC) return 0xd97706u;
-    switch (kind) {
-    case PG_SHAPE_CIRCLE: return 0x2563ebu;
-    case PG_SHAPE_CAPSULE: return 0x16a34au;
-    case PG_SHAPE_SEGMENT: return 0x374151u;
-    case PG_SHAPE_POLYGON:
-    default: return vertex_count == 3 ? 0xdb2777u : 0x7c3aedu;
-    }
+    uint64_t user_data = pg_body_user_data(world, body);
+    if ((user_data & PGA_COLOR_FLAG) != 0) return (uint32_t)(user_data >> 32) & 0xffffffu;
+    return pga__default_color(pg_body_type_of(world, body), kind, shape_count);
 }
 
 uint32_t pga_world_draw_shapes(const pg_world *world, pga_draw_shape *out, uint32_t capacity)
@@ -33,8 +30,8 @@ uint32_t pga_world_draw_shapes(const pg_world *world, pga_draw_shape *out, uint3
     def = pg_world_get_def(world);
     bodies = (pg_body_id *)malloc((size_t)(def.max_bodies != 0 ? def.max_bodies : 1) * sizeof *bodies);
     if (bodies == NULL) return 0;
-    everything.lo.x = everything.lo.y = -0x7fffffff;
-    everything.hi.x = everything.hi.y = 0x7fffffff;
+    everything.lo = pg_v2(PG_FIX_MIN, PG_FIX_MIN);
+    everything.hi = pg_v2(PG_FIX_MAX, PG_FIX_MAX);
     if (pg_world_query_aabb(world, everything, bodies, def.max_bodies, &body_count) != PG_OK) body_count = 0;
     if (body_count > def.max_bodies) body_count = def.max_bodies;
     for (b = 0; b < body_count; ++b) {
@@ -45,11 +42,13 @@ uint32_t pga_world_draw_shapes(const pg_world *world, pga_draw_shape *out, uint3
         if (n > 64u) n = 64u;
         if (type == PG_BODY_STATIC) flags |= PGA_DRAW_STATIC;
         if (type == PG_BODY_KINEMATIC) flags |= PGA_DRAW_KINEMATIC;
-        if (type == PG_BODY_DYNAMIC && !pg_body_is_awake(world, bodies[b])) flags |= PGA_DRAW_ASLEEP;
+        if (type != PG_BODY_STATIC && !pg_body_is_awake(world, bodies[b])) flags |= PGA_DRAW_ASLEEP;
+        uint32_t color = 0;
         for (i = 0; i < n; ++i) {
             pg_geometry g;
             pga_draw_shape *d;
             if (pg_shape_geometry(world, shapes[i], &g) != PG_OK) continue;
+            if (i == 0) color = pga_world_draw_color(world, bodies[b], g.kind, n);
             total++;
             if (written >= capacity || out == NULL) continue;
             d = &out[written++];
@@ -58,7 +57,7 @@ uint32_t pga_world_draw_shapes(const pg_world *world, pga_draw_shape *out, uint3
             d->count = g.count;
             d->radius = g.radius;
             d->flags = flags;
-            d->color = pga_world_draw_color(type, g.kind, g.count);
+            d->color = color;
             for (v = 0; v < g.count && v < PG_MAX_VERTICES; ++v)
                 d->vertices[v] = pg_v2_add(position, pg_rot_apply(rot, g.vertices[v]));
         }

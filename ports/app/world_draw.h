@@ -1,9 +1,9 @@
 /* world_draw.h — the shapes of any world as a draw list, for views that show a world
  * the app does not own (a replay being played or jumped in, see replay_seek.h).
  *
- * The list has the app's form (pga_draw_shape of pogon_app.h), so a front end draws
- * both with one routine. Replay files carry no colours: a shape's colour here follows
- * its body's type and its kind.
+ * The list has the app's form (pga_draw_shape of pogon_app.h) and its colours (from
+ * user_data, which replays keep), so a front end draws both with one routine and a
+ * replay looks like the session it recorded. No body is drawn as selected.
  */
 #ifndef PGA_WORLD_DRAW_H
 #define PGA_WORLD_DRAW_H
@@ -19,8 +19,8 @@ extern "C" {
  * a return above `capacity` means the list was cut. Bodies without shapes are not seen. */
 uint32_t pga_world_draw_shapes(const pg_world *world, pga_draw_shape *out, uint32_t capacity);
 
-/* The colour pga_world_draw_shapes gives a shape of this kind on a body of this type. */
-uint32_t pga_world_draw_color(pg_body_type type, pg_shape_kind kind, int32_t vertex_count);
+/* The colour of `body`, whose first shape is `kind`, of `shape_count` shapes. */
+uint32_t pga_world_draw_color(const pg_world *world, pg_body_id body, pg_shape_kind kind, uint32_t shape_count);
 
 #ifdef __cplusplus
 }
