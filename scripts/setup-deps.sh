@@ -3,7 +3,7 @@
 #
 # Usage: scripts/setup-deps.sh [--check] [GROUP...]
 #   GROUP    one or more of the groups below; default: the groups scripts/test.sh
-#            and scripts/demo.sh need (build test wasm cross)
+#            and scripts/demo.sh need (build test wasm cross desktop)
 #   --check  only report what is missing; exit 1 if anything is
 #
 # Idempotent: packages already installed (dpkg says "install ok installed") are left
@@ -39,6 +39,12 @@ PACKAGES=(
   "cross|gcc-s390x-linux-gnu|big-endian cross compiler (determinism_s390x: byte order)"
   "cross|libc6-dev-s390x-cross|C library headers and static libc for the s390x cross compiler"
   "cross|qemu-user|runs the static ARM and s390x programs (qemu-arm, qemu-s390x); no binfmt needed"
+  # --- desktop: pogon-desktop (ports/desktop) and its window tests (label desktop) ----
+  "desktop|libsdl2-dev|SDL2: the desktop program's window, input and renderer"
+  "desktop|libsdl2-gfx-dev|SDL2_gfx: filled polygons and circles and the 8x8 text font the desktop program draws with"
+  "desktop|xvfb|a virtual X server: the window tests run pogon-desktop under xvfb-run"
+  "desktop|xauth|xvfb-run needs it to authorise its clients"
+  "desktop|xdotool|the window tests click and press keys in pogon-desktop's window"
   # --- optional groups for later work: install with e.g. scripts/setup-deps.sh peers ---
   "cortex-m|gcc-arm-none-eabi|bare-metal Cortex-M compiler"
   "cortex-m|libnewlib-arm-none-eabi|C library for the Cortex-M firmware"
@@ -47,7 +53,7 @@ PACKAGES=(
   "peers|libchipmunk-dev|Chipmunk2D 7.0.3, a float peer for the benchmarks"
   "peers|g++|C++ compiler for the Box2D harness (tools/bench/peers; matter.js comes from npm, node and emcc from the wasm group)"
 )
-DEFAULT_GROUPS=(build test wasm cross)
+DEFAULT_GROUPS=(build test wasm cross desktop)
 
 check_only=0
 groups=()
