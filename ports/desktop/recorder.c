@@ -56,6 +56,7 @@ int desktop_recorder_tick(desktop_recorder *r, pga_app *app, double now, int for
         return 0;
     }
     scene_hash = pg_hash_bytes(PG_HASH_SEED, info.scene_text, info.scene_size);
+    if (!r->written && info.frame_count == 0) return 1; /* nothing played yet: leave no empty file */
     if (r->written && (scene_hash != r->scene_hash || info.frame_count < r->frames)) {
         /* A new recording: keep the file of the previous one and start the next. */
         r->segment++;
@@ -76,7 +77,8 @@ int desktop_recorder_tick(desktop_recorder *r, pga_app *app, double now, int for
 int desktop_recorder_finish(desktop_recorder *r, pga_app *app, double now)
 {
     int ok = desktop_recorder_tick(r, app, now, 1);
-    if (r->segment == 1) printf("pogon-desktop: recorded %u frames to %s\n", r->frames, r->path);
+    if (!r->written) printf("pogon-desktop: nothing recorded (no frame was played live); %s not written\n", r->path);
+    else if (r->segment == 1) printf("pogon-desktop: recorded %u frames to %s\n", r->frames, r->path);
     else printf("pogon-desktop: recorded %s.pgr .. %s (the last: %u frames)\n", r->base, r->path, r->frames);
     fflush(stdout);
     return ok;

@@ -4,7 +4,8 @@
  * written to FILE.tmp and renamed over FILE, so a kill, a crash or a closed window
  * loses at most the last second and always leaves a whole replay file. When the app
  * restarts its recording (another scene, a preset), the file so far is kept and the
- * new session goes to FILE-2.pgr, FILE-3.pgr, ...
+ * new session goes to FILE-2.pgr, FILE-3.pgr, ... No file is written before the first
+ * live frame (a window opened only to play a replay leaves none).
  */
 #ifndef DESKTOP_RECORDER_H
 #define DESKTOP_RECORDER_H
