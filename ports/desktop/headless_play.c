@@ -4,6 +4,7 @@
  * jumps then restore kept snapshots, so the printed hashes test the jump path against
  * the straight one (`--until F` plays straight from frame 0 with nothing kept).
  */
+#define _POSIX_C_SOURCE 200809L
 #include "headless_play.h"
 
 #include <stdio.h>

@@ -1,4 +1,5 @@
 /* recorder.c — see recorder.h. */
+#define _POSIX_C_SOURCE 200809L
 #include "recorder.h"
 
 #include <stdio.h>
