@@ -29,7 +29,8 @@
 #define POGON_SCENES_DIR "scenes"
 #endif
 
-#define JUMP_SLICE_FRAMES 1500u  /* frames re-stepped per display frame during a jump */
+#define SLICE_SECONDS 0.05       /* time a drawn frame may spend re-stepping a jump or fast playback */
+#define SLICE_FRAMES 8u          /* frames between two looks at the clock */
 #define MAX_STEPS_PER_DRAW 8     /* live mode catches up at most this many steps a frame */
 
 typedef struct desktop_window {
@@ -304,22 +305,27 @@ static void advance_playback(desktop_window *w, double dt)
 {
     pga_seek_status st = pga_seek_get_status(w->seek);
     uint32_t hz = pg_world_get_def(pga_seek_world(w->seek)).step_hz, n = 0;
+    double until = seconds() + SLICE_SECONDS;
     if (st.seeking) {
-        pga_seek_advance(w->seek, JUMP_SLICE_FRAMES);
+        /* A slice of the jump, then a drawn frame with the progress bar. */
+        while (!pga_seek_advance(w->seek, SLICE_FRAMES) && seconds() < until) {
+        }
         return;
     }
     if (w->replay_paused) return;
     w->play_accumulator += dt * w->speed * (double)(hz != 0 ? hz : 60u);
-    while (w->play_accumulator >= 1.0 && n < JUMP_SLICE_FRAMES) {
+    while (w->play_accumulator >= 1.0) {
         if (!pga_seek_step(w->seek)) {
             w->replay_paused = 1;
             w->play_accumulator = 0.0;
             return;
         }
         w->play_accumulator -= 1.0;
-        n++;
+        if (++n % SLICE_FRAMES == 0u && seconds() >= until) {
+            w->play_accumulator = 0.0; /* faster than this machine can play: drop the backlog */
+            break;
+        }
     }
-    if (n == JUMP_SLICE_FRAMES) w->play_accumulator = 0.0;
 }
 
 /* ---- drawing ------------------------------------------------------------------------------- */
