@@ -90,7 +90,7 @@ struct pga_app {
 
     pg_body_id selected;
     int keys[PGA_KEY_COUNT];
-    int kinematic_driven;           /* the selected kinematic body has a velocity from keys or drag */
+    pg_body_id driven;              /* the kinematic body keys or the drag set moving (stopped when let go) */
 
     int dragging;                   /* a body picked with the move tool is held */
     pg_body_id drag_body;
