@@ -52,7 +52,7 @@ typedef struct pga_recorder {
     uint8_t *data;
     size_t capacity;
     int active;
-    uint64_t logged_hash;   /* world hash after the last logged frame (the file's final hash) */
+    uint64_t logged_hash;   /* while commands wait unlogged (paused): the hash before them */
     uint8_t *copy;          /* pga_recording's finished copy */
     size_t copy_capacity;
 } pga_recorder;
@@ -163,6 +163,9 @@ void pga__control_commands(pga_app *app);
 
 /* ---- app_record.c ---- */
 pg_result pga__recorder_start(pga_app *app);
+/* Called before the first command of a frame is applied: keeps the hash the file ends
+ * with while that frame is not yet logged. */
+void pga__recorder_before_changes(pga_app *app);
 /* Log the frame's commands (before the step). */
 pg_result pga__recorder_frame(pga_app *app, const pg_command *commands, uint32_t count);
 /* After the step: the hash and a checkpoint when due. */
