@@ -25,6 +25,9 @@
 #define PGA_MIN_BODIES 512u
 #define PGA_MIN_SHAPES 1024u
 #define PGA_MIN_CONTACTS 4096u
+/* The most memory one world may take: a scene or replay asking for more (its capacities)
+ * is refused with a message instead of failing an allocation (in wasm, aborting). */
+#define PGA_MAX_WORLD_BYTES ((size_t)256 << 20)
 /* Checkpoint interval of recordings (frames). */
 #define PGA_CHECKPOINT_INTERVAL 60u
 /* Actions queued between two frames (a front end gives a few per display frame). */
