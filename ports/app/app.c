@@ -77,7 +77,7 @@ void pga__reset_input(pga_app *app)
     memset(app->keys, 0, sizeof app->keys);
     app->pending_count = 0;
     app->dragging = 0;
-    app->kinematic_driven = 0;
+    app->driven.index = app->driven.generation = 0;
     app->queue_count = 0;
     app->frame_command_count = 0;
     app->step_requested = 0;
@@ -225,7 +225,6 @@ pg_result pga_select(pga_app *app, pg_body_id body)
         pga__say(app, PGA_MESSAGE_REFUSED, "Not selected: body %u/%u is not in the world", body.index, body.generation);
         return PG_ERR_STALE_HANDLE;
     }
-    if (!pg_body_id_equal(app->selected, body)) app->kinematic_driven = 0;
     app->selected = body;
     return PG_OK;
 }

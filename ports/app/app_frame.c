@@ -52,6 +52,7 @@ void pga__flush_queue(pga_app *app)
 {
     pg_body_id made = {0, 0}, none = {0, 0};
     uint32_t i;
+    if (app->queue_count > 0) pga__recorder_before_changes(app);
     for (i = 0; i < app->queue_count; ++i) {
         pga_action *a = &app->queue[i];
         pg_body_id created = {0, 0};

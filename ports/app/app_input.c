@@ -107,7 +107,20 @@ static void drive_kinematic(pga_app *app, pg_body_id body, int dx, int dy, int s
     pg_fix av = spin * PGA_KEY_SPIN;
     if (!pg_v2_equal(v, pg_body_linear_velocity(w, body))) command_velocity(app, body, v);
     if (av != pg_body_angular_velocity(w, body)) command_spin(app, body, av);
-    app->kinematic_driven = dx != 0 || dy != 0 || spin != 0;
+    if (dx != 0 || dy != 0 || spin != 0) app->driven = body;
+    else app->driven.index = app->driven.generation = 0;
+}
+
+/* A kinematic body keeps its velocity until told otherwise: the one the app set moving
+ * stops when it is no longer the one keys or the pointer lead. */
+static void stop_left_behind(pga_app *app)
+{
+    const pg_world *w = app->live.world;
+    pg_body_id b = app->driven;
+    if (b.generation == 0) return;
+    if (pg_body_id_equal(b, app->selected) || (app->dragging && pg_body_id_equal(b, app->drag_body))) return;
+    if (pg_body_is_valid(w, b)) drive_kinematic(app, b, 0, 0, 0);
+    app->driven.index = app->driven.generation = 0;
 }
 
 void pga__control_commands(pga_app *app)
@@ -120,16 +133,15 @@ void pga__control_commands(pga_app *app)
     int spin = app->keys[PGA_KEY_SPIN_CCW] - app->keys[PGA_KEY_SPIN_CW];
 
     if (app->dragging && !pg_body_is_valid(w, app->drag_body)) app->dragging = 0;
+    stop_left_behind(app);
     if (app->dragging) {
         drag(app);
-        if (pg_body_id_equal(app->drag_body, sel)) {
-            app->kinematic_driven = pg_body_type_of(w, sel) == PG_BODY_KINEMATIC;
-            return; /* the pointer leads; keys wait */
-        }
+        if (pg_body_type_of(w, app->drag_body) == PG_BODY_KINEMATIC) app->driven = app->drag_body;
+        if (pg_body_id_equal(app->drag_body, sel)) return; /* the pointer leads; keys wait */
     }
     if (!pg_body_is_valid(w, sel)) return;
     type = pg_body_type_of(w, sel);
-    if (type == PG_BODY_KINEMATIC && (dx != 0 || dy != 0 || spin != 0 || app->kinematic_driven))
+    if (type == PG_BODY_KINEMATIC && (dx != 0 || dy != 0 || spin != 0 || pg_body_id_equal(app->driven, sel)))
         drive_kinematic(app, sel, dx, dy, spin);
     else if (type == PG_BODY_DYNAMIC && (dx != 0 || dy != 0 || spin != 0))
         push_dynamic(app, sel, dx, dy, spin);

@@ -25,6 +25,9 @@
 #define PGA_MIN_BODIES 512u
 #define PGA_MIN_SHAPES 1024u
 #define PGA_MIN_CONTACTS 4096u
+/* The most memory one world may take: a scene or replay asking for more (its capacities)
+ * is refused with a message instead of failing an allocation (in wasm, aborting). */
+#define PGA_MAX_WORLD_BYTES ((size_t)256 << 20)
 /* Checkpoint interval of recordings (frames). */
 #define PGA_CHECKPOINT_INTERVAL 60u
 /* Actions queued between two frames (a front end gives a few per display frame). */
@@ -52,7 +55,7 @@ typedef struct pga_recorder {
     uint8_t *data;
     size_t capacity;
     int active;
-    uint64_t logged_hash;   /* world hash after the last logged frame (the file's final hash) */
+    uint64_t logged_hash;   /* while commands wait unlogged (paused): the hash before them */
     uint8_t *copy;          /* pga_recording's finished copy */
     size_t copy_capacity;
 } pga_recorder;
@@ -90,7 +93,7 @@ struct pga_app {
 
     pg_body_id selected;
     int keys[PGA_KEY_COUNT];
-    int kinematic_driven;           /* the selected kinematic body has a velocity from keys or drag */
+    pg_body_id driven;              /* the kinematic body keys or the drag set moving (stopped when let go) */
 
     int dragging;                   /* a body picked with the move tool is held */
     pg_body_id drag_body;
@@ -163,6 +166,9 @@ void pga__control_commands(pga_app *app);
 
 /* ---- app_record.c ---- */
 pg_result pga__recorder_start(pga_app *app);
+/* Called before the first command of a frame is applied: keeps the hash the file ends
+ * with while that frame is not yet logged. */
+void pga__recorder_before_changes(pga_app *app);
 /* Log the frame's commands (before the step). */
 pg_result pga__recorder_frame(pga_app *app, const pg_command *commands, uint32_t count);
 /* After the step: the hash and a checkpoint when due. */

@@ -45,6 +45,11 @@ pg_result pga_play_replay(pga_app *app, const uint8_t *data, size_t size)
         refuse(app, &e);
         return r;
     }
+    if (need > PGA_MAX_WORLD_BYTES) {
+        pga__say(app, PGA_MESSAGE_ERROR, "Replay refused: offset %lu, scene: its capacities need %lu MiB of world memory; the app allows at most %lu MiB",
+                 (unsigned long)p.player.info.scene_offset, (unsigned long)(need >> 20), (unsigned long)(PGA_MAX_WORLD_BYTES >> 20));
+        return PG_ERR_CAPACITY;
+    }
     p.data = (uint8_t *)malloc(size);
     p.memory = malloc(need);
     if (p.data == NULL || p.memory == NULL) {

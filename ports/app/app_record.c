@@ -4,7 +4,8 @@
  * world as loaded; every stepped frame adds the commands applied before its step, and a
  * checkpoint every PGA_CHECKPOINT_INTERVAL frames. pga_recording finishes a copy (the end
  * record needs the final hash: the hash after the last logged step), so recording goes
- * on. */
+ * on. That hash is the world's, unless commands applied while paused wait for the next
+ * step: then it is the hash taken before the first of them. */
 #include "app_internal.h"
 
 #include <stdlib.h>
@@ -48,9 +49,13 @@ pg_result pga__recorder_start(pga_app *app)
         pg_replay_writer_set_buffer(&rec->writer, rec->data, rec->capacity);
     }
     if (r != PG_OK) return r;
-    rec->logged_hash = pg_world_hash(app->live.world);
     rec->active = 1;
     return PG_OK;
+}
+
+void pga__recorder_before_changes(pga_app *app)
+{
+    if (app->recorder.active && app->frame_command_count == 0) app->recorder.logged_hash = pg_world_hash(app->live.world);
 }
 
 pg_result pga__recorder_frame(pga_app *app, const pg_command *commands, uint32_t count)
@@ -70,7 +75,6 @@ pg_result pga__recorder_after_step(pga_app *app)
     pga_recorder *rec = &app->recorder;
     pg_result r = PG_OK;
     if (!rec->active) return PG_OK;
-    rec->logged_hash = pg_world_hash(app->live.world);
     if (!pg_replay_writer_checkpoint_due(&rec->writer)) return PG_OK;
     while ((r = pg_replay_writer_add_checkpoint_world(&rec->writer, app->live.world)) == PG_ERR_MEMORY) {
         if (grow(rec, rec->capacity * 2) != PG_OK) return PG_ERR_MEMORY;
@@ -109,7 +113,9 @@ pg_result pga_recording(pga_app *app, const uint8_t **data, size_t *size)
     memcpy(rec->copy, rec->data, rec->writer.size);
     copy = rec->writer;
     r = pg_replay_writer_set_buffer(&copy, rec->copy, rec->copy_capacity);
-    if (r == PG_OK) r = pg_replay_writer_finish(&copy, rec->logged_hash, &written);
+    if (r == PG_OK)
+        r = pg_replay_writer_finish(&copy, app->frame_command_count > 0 ? rec->logged_hash : pg_world_hash(app->live.world),
+                                    &written);
     if (r != PG_OK) {
         pga__say(app, PGA_MESSAGE_ERROR, "No recording: the replay writer says %s", pg_result_name(r));
         return r;

@@ -46,6 +46,14 @@ static pg_result load(const pg_world_def *def, const char *text, size_t length, 
         copy_error(error, error_size, why != NULL ? why : "the world settings are invalid");
         return PG_ERR_INVALID_ARGUMENT;
     }
+    if (need > PGA_MAX_WORLD_BYTES) {
+        if (error != NULL && error_size > 0)
+            snprintf(error, error_size, "its capacities (max_bodies %lu, max_shapes %lu, max_contacts %lu) need %lu MiB of "
+                     "world memory; the app allows at most %lu MiB", (unsigned long)def->max_bodies,
+                     (unsigned long)def->max_shapes, (unsigned long)def->max_contacts, (unsigned long)(need >> 20),
+                     (unsigned long)(PGA_MAX_WORLD_BYTES >> 20));
+        return PG_ERR_CAPACITY;
+    }
     box->memory = malloc(need);
     if (box->memory == NULL) {
         copy_error(error, error_size, "out of memory for the world");

@@ -26,6 +26,19 @@ static void test_demo_player_keys(void **state)
     p0 = pg_body_position(w, player);
     frames(app, 10);
     assert_true(pg_v2_equal(pg_body_position(w, player), p0));
+    /* selecting another body while the player moves: the player stops */
+    frames(app, 60);
+    pga_key(app, PGA_KEY_UP, 1);
+    frames(app, 5);
+    assert_int_equal(pg_body_linear_velocity(w, player).y, PG_FIX_C(6));
+    pga_set_tool(app, PGA_TOOL_MOVE);
+    pga_pointer_down(app, at(-10, 0.5)); /* the demo's ball, resting on the ground */
+    pga_pointer_up(app, at(-10, 0.5));
+    assert_false(pg_body_id_equal(pga_selected(app), player));
+    assert_true(pg_body_is_valid(w, pga_selected(app)));
+    pga_frame(app);
+    assert_true(pg_v2_equal(pg_body_linear_velocity(w, player), pg_v2_zero()));
+    pga_key(app, PGA_KEY_UP, 0);
     pga_destroy(app);
 }
 

@@ -215,6 +215,11 @@ static void test_bad_arguments(void **state)
     assert_int_equal(pga_load_scene(app, "broken", "pogon-scene 1\nbox 1 x\n", 22), PG_ERR_INVALID_ARGUMENT);
     assert_non_null(strstr(pga_message(app), "line 2"));
     assert_string_equal(pga_scene_name(app), "demo");
+    /* capacities that would need gigabytes: refused with a message, not an allocation */
+    assert_int_equal(pga_load_scene(app, "huge", "pogon-scene 1\nmax_bodies 16000000\nmax_shapes 16000000\n", 54),
+                     PG_ERR_CAPACITY);
+    assert_non_null(strstr(pga_message(app), "MiB"));
+    assert_string_equal(pga_scene_name(app), "demo");
     assert_true(pga_state_hash(app) == hash);
     assert_int_equal(pga_frame(app), 1);
     pga_destroy(app);

@@ -289,6 +289,47 @@ static void test_delete(void **state)
     pga_destroy(app);
 }
 
+/* The draw list: every shape in world coordinates, colours by type and shape for scene
+ * bodies, flags for the selected, static and kinematic bodies. */
+static void test_draw_list(void **state)
+{
+    pga_app *app = app_with("d", "pogon-scene 1\nwall 40 1 position 0 -0.5\n"
+                                  "box 2 1 position 3 4 angle 90\n"
+                                  "ball 0.5 position -3 4\n"
+                                  "star 0.8 position 0 8\n"
+                                  "box 1 2 type kinematic position 10 1 user_data 1\n");
+    const pga_draw_shape *d;
+    uint32_t n, i, selected = 0;
+    (void)state;
+    d = pga_draw_list(app, &n);
+    assert_int_equal(n, 6); /* the star has two shapes */
+    assert_int_equal(d[0].flags, PGA_DRAW_STATIC);
+    assert_int_equal(d[0].color, 0x6b7280u);
+    /* the box turned by 90 degrees: its 2 m side is vertical, centred on (3, 4) */
+    assert_int_equal(d[1].kind, PG_SHAPE_POLYGON);
+    assert_int_equal(d[1].count, 4);
+    assert_int_equal(d[1].color, 0x3b82f6u);
+    for (i = 0; i < 4; ++i) {
+        assert_true(labs((long)d[1].vertices[i].x - PG_FIX_C(3)) <= PG_FIX_HALF + 2);
+        assert_true(labs((long)d[1].vertices[i].y - PG_FIX_C(4)) <= PG_FIX_ONE + 2);
+        assert_true(labs((long)d[1].vertices[i].y - PG_FIX_C(4)) >= PG_FIX_ONE - 2);
+    }
+    assert_int_equal(d[2].kind, PG_SHAPE_CIRCLE);
+    assert_int_equal(d[2].color, 0xef4444u);
+    assert_true(pg_v2_equal(d[2].vertices[0], at(-3, 4)));
+    assert_int_equal(d[2].radius, PG_FIX_HALF);
+    assert_int_equal(d[3].color, 0xeab308u);
+    assert_true(pg_body_id_equal(d[3].body, d[4].body));
+    for (i = 0; i < n; ++i)
+        if (d[i].flags & PGA_DRAW_SELECTED) {
+            selected++;
+            assert_int_equal(d[i].flags, PGA_DRAW_SELECTED | PGA_DRAW_KINEMATIC);
+            assert_int_equal(d[i].color, 0xf59e0bu);
+        }
+    assert_int_equal(selected, 1); /* the player, tag 1, selected at load */
+    pga_destroy(app);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -298,6 +339,7 @@ int main(void)
         cmocka_unit_test(test_overlap_refused),
         cmocka_unit_test(test_nudge_places_at_free_spot),
         cmocka_unit_test(test_delete),
+        cmocka_unit_test(test_draw_list),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
