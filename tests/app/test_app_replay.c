@@ -257,6 +257,80 @@ static void test_scene_files_load(void **state)
     }
 }
 
+/* A reproducible pseudo-random stream for the random sessions. */
+static uint32_t next_random(uint32_t *state)
+{
+    *state = *state * 1664525u + 1013904223u;
+    return *state >> 8;
+}
+
+/* Random input of every kind for many frames: whatever happens, the recording replays with
+ * every checkpoint and the final hash matching (since the last restart by a preset). */
+static void test_random_sessions_replay(void **state)
+{
+    uint32_t seed;
+    (void)state;
+    for (seed = 1; seed <= 4; ++seed) {
+        pga_app *app = app_with_file(seed % 2 ? "demo" : "pile");
+        uint32_t r = seed * 7919u, f, since_restart = 0;
+        const uint8_t *rec;
+        size_t size;
+        uint8_t *copy;
+        uint64_t hash;
+        for (f = 0; f < 900; ++f) {
+            uint32_t what = next_random(&r) % 40;
+            pg_vec2 p = pg_v2((pg_fix)(next_random(&r) % (38u << 16)) - PG_FIX_C(19),
+                              (pg_fix)(next_random(&r) % (18u << 16)));
+            pga_params params = pga_default_params();
+            switch (what) {
+            case 0: pga_set_tool(app, (pga_tool)(next_random(&r) % PGA_TOOL_COUNT)); break;
+            case 1: case 2: case 3: pga_pointer_down(app, p); break;
+            case 4: pga_pointer_move(app, p); break;
+            case 5: pga_pointer_up(app, p); break;
+            case 6: case 7: pga_key(app, (pga_key_code)(next_random(&r) % PGA_KEY_COUNT), (int)(next_random(&r) % 2)); break;
+            case 8: pga_toggle_gravity(app); break;
+            case 9: pga_set_effects(app, next_random(&r) & PG_EFFECTS_ALL); break;
+            case 10: pga_set_paused(app, 1); break;
+            case 11: pga_step_once(app); break;
+            case 12:
+                params.radius = PG_FIX_ONE / 8 + (pg_fix)(next_random(&r) % PG_FIX_ONE);
+                params.width = PG_FIX_ONE / 4 + (pg_fix)(next_random(&r) % (2u << 16));
+                params.height = PG_FIX_ONE / 4 + (pg_fix)(next_random(&r) % (2u << 16));
+                params.density = PG_FIX_ONE / 2 + (pg_fix)(next_random(&r) % (5u << 16));
+                params.restitution = (pg_fix)(next_random(&r) % PG_FIX_ONE);
+                params.color = next_random(&r) & 0xffffffu;
+                params.nudge = (int)(next_random(&r) % 2);
+                assert_int_equal(pga_set_params(app, &params), PG_OK);
+                break;
+            case 13: pga_set_selected_material(app, PG_FIX_C(2), PG_FIX_ONE / 3, PG_FIX_ONE / 5); break;
+            case 14: pga_set_selected_color(app, next_random(&r) & 0xffffffu); break;
+            default: break;
+            }
+            if (pga_paused(app) && next_random(&r) % 8 == 0) pga_set_paused(app, 0);
+            if (f == 300 && seed > 2) { /* a preset restarts the world and the recording */
+                assert_int_equal(pga_set_preset(app, (pga_preset)(seed % PGA_PRESET_COUNT)), PG_OK);
+                since_restart = 0;
+            }
+            since_restart += (uint32_t)pga_frame(app);
+        }
+        pga_set_paused(app, 0); /* one more step logs what waits while paused */
+        since_restart += (uint32_t)pga_frame(app);
+        assert_int_equal(pga_recording(app, &rec, &size), PG_OK);
+        copy = (uint8_t *)malloc(size);
+        memcpy(copy, rec, size);
+        assert_int_equal(replay_all(copy, size, &hash), since_restart);
+        assert_true(hash == pga_state_hash(app));
+        if (getenv("POGON_APP_TEST_VERBOSE") != NULL) {
+            pg_replay_info info;
+            assert_int_equal(pg_replay_read(copy, size, &info, NULL), PG_OK);
+            printf("seed %u: %u frames, %llu commands, %u bodies\n", seed, info.frame_count,
+                   (unsigned long long)info.command_count, pga_body_count(app));
+        }
+        free(copy);
+        pga_destroy(app);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -266,6 +340,7 @@ int main(void)
         cmocka_unit_test(test_corrupt_and_truncated_files),
         cmocka_unit_test(test_bad_arguments),
         cmocka_unit_test(test_scene_files_load),
+        cmocka_unit_test(test_random_sessions_replay),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
