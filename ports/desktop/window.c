@@ -51,6 +51,8 @@ typedef struct desktop_window {
     uint32_t shape_capacity;
     char notice[300];            /* the port's own message (files); shown when newer than the app's */
     uint32_t notice_app_serial;
+    uint32_t echoed_serial;      /* the app message last printed */
+    int step_requested;          /* N while paused: step in this drawn frame, whatever the clock */
     int screenshot_due;
     int quit;
     uint64_t frames_drawn;
@@ -181,7 +183,10 @@ static void live_key(desktop_window *w, const SDL_KeyboardEvent *k)
     }
     if (k->type != SDL_KEYDOWN || k->repeat) return;
     if (c >= SDLK_1 && c <= SDLK_8) {
+        char line[64];
         pga_set_tool(w->app, (pga_tool)(c - SDLK_1));
+        snprintf(line, sizeof line, "tool %s", pga_tool_name(pga_get_tool(w->app)));
+        notice(w, line);
     } else if (c >= SDLK_F1 && c <= SDLK_F7) {
         pga_set_effects(w->app, pga_effects(w->app) ^ pga_effect_bit((uint32_t)(c - SDLK_F1)));
     } else if (c == SDLK_F9 || c == SDLK_F10 || c == SDLK_F11) {
@@ -194,6 +199,7 @@ static void live_key(desktop_window *w, const SDL_KeyboardEvent *k)
     } else if (c == SDLK_n) {
         if (!pga_paused(w->app)) pga_set_paused(w->app, 1);
         pga_step_once(w->app);
+        w->step_requested = 1;
     } else if (c == SDLK_u) {
         pga_params p = pga_get_params(w->app);
         p.nudge = !p.nudge;
@@ -288,6 +294,11 @@ static void advance_live(desktop_window *w, double dt)
     uint32_t hz = pg_world_get_def(pga_world(w->app)).step_hz;
     double step = 1.0 / (double)(hz != 0 ? hz : 60u);
     int n = 0;
+    if (w->step_requested) {
+        w->step_requested = 0;
+        pga_frame(w->app); /* paused: the requested single step */
+        return;
+    }
     if (w->o->bench_seconds > 0.0) {
         pga_frame(w->app); /* one step a drawn frame: frames per second are steps per second */
         return;
@@ -308,7 +319,13 @@ static void advance_playback(desktop_window *w, double dt)
     double until = seconds() + SLICE_SECONDS;
     if (st.seeking) {
         /* A slice of the jump, then a drawn frame with the progress bar. */
-        while (!pga_seek_advance(w->seek, SLICE_FRAMES) && seconds() < until) {
+        int arrived;
+        while (!(arrived = pga_seek_advance(w->seek, SLICE_FRAMES)) && seconds() < until) {
+        }
+        if (arrived) {
+            char line[64];
+            snprintf(line, sizeof line, "jumped to frame %u", pga_seek_get_status(w->seek).frame);
+            notice(w, line);
         }
         return;
     }
@@ -520,6 +537,12 @@ int desktop_window_run(const desktop_options *o)
         if (w.seek != NULL) advance_playback(&w, dt);
         else advance_live(&w, dt);
         if (w.seek == NULL) desktop_recorder_tick(&w.recorder, w.app, now - start, 0);
+        if (pga_message_serial(w.app) != w.echoed_serial) {
+            /* The app's messages on the terminal too: a log of what the session did. */
+            w.echoed_serial = pga_message_serial(w.app);
+            if (!o->quiet) printf("pogon-desktop: frame %llu: %s\n", (unsigned long long)pga_frame_number(w.app), pga_message(w.app));
+            fflush(stdout);
+        }
         draw(&w);
         if (o->bench_seconds > 0.0) {
             /* The first second warms up; frames are counted after it. */

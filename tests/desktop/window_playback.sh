@@ -16,19 +16,28 @@ trap 'kill $pid 2>/dev/null || true' EXIT
 wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^pogon$' | head -n 1)
 xdotool windowfocus --sync "$wid" || true
 act() { xdotool "$@"; sleep 0.4; }
-act key --window "$wid" space      # pause
-act key --window "$wid" End        # jump to the last frame
-sleep 1
-act key --window "$wid" F12
-act key --window "$wid" Home       # back to frame 0 (a kept snapshot)
-act key --window "$wid" n          # one step: frame 1
-act key --window "$wid" F12
+# Wait until the program's log holds COUNT lines matching PATTERN, so that a loaded
+# machine slows the test down instead of failing it.
+wait_for() { # PATTERN [COUNT]
+  local n=${2:-1}
+  for _ in $(seq 1 300); do
+    [ "$(grep -c -- "$1" "$log" || true)" -ge "$n" ] && return 0
+    sleep 0.1
+  done
+  echo "FAIL: waited 30 s for '$1' (x$n) in the program's output"; cat "$log"; exit 1
+}
+n=$("$desktop" --headless --play "$file" | sed -n 's/.*: frame \([0-9]*\) of \([0-9]*\),.*/\2/p')
+act key --window "$wid" space                                    # pause
+act key --window "$wid" End; wait_for "jumped to frame $n"       # jump to the last frame
+act key --window "$wid" F12; wait_for "screenshot of frame" 1
+act key --window "$wid" Home; wait_for "jumped to frame 0"       # back to frame 0 (a kept snapshot)
+act key --window "$wid" n; wait_for "jumped to frame 1\$"        # one step: frame 1
+act key --window "$wid" F12; wait_for "screenshot of frame" 2
 act key --window "$wid" Escape
 for _ in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 wait $pid
 trap - EXIT
 cat "$log"
-n=$("$desktop" --headless --play "$file" | sed -n 's/.*: frame \([0-9]*\) of \([0-9]*\),.*/\2/p')
 mapfile -t shots < <(sed -n 's/.*screenshot of frame \([0-9]*\) written to \(.*\)$/\1 \2/p' "$log")
 [ ${#shots[@]} -eq 2 ] || { echo "FAIL: expected 2 screenshots, got ${#shots[@]}"; exit 1; }
 [ "${shots[0]%% *}" = "$n" ] || { echo "FAIL: End should show frame $n, the screenshot is of frame ${shots[0]%% *}"; exit 1; }

@@ -15,8 +15,19 @@ pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT
 wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^pogon$' | head -n 1)
 xdotool windowfocus --sync "$wid" || true
-sleep 1.5; xdotool key --window "$wid" F9
-sleep 1.5; xdotool key --window "$wid" Tab
+log=$work/log
+# Wait until the program's log holds COUNT lines matching PATTERN, so that a loaded
+# machine slows the test down instead of failing it.
+wait_for() { # PATTERN [COUNT]
+  local n=${2:-1}
+  for _ in $(seq 1 300); do
+    [ "$(grep -c -- "$1" "$log" || true)" -ge "$n" ] && return 0
+    sleep 0.1
+  done
+  echo "FAIL: waited 30 s for '$1' (x$n) in the program's output"; cat "$log"; exit 1
+}
+sleep 1.5; xdotool key --window "$wid" F9; wait_for "now $work/s-2.pgr"
+sleep 1.5; xdotool key --window "$wid" Tab; wait_for "now $work/s-3.pgr"
 sleep 1.5; xdotool key --window "$wid" Escape
 for _ in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 wait $pid

@@ -27,27 +27,37 @@ wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^pogon$' | head -n 
 [ -n "$wid" ] || { echo "no window"; cat "$log"; exit 1; }
 xdotool windowfocus --sync "$wid" || true
 act() { xdotool "$@"; sleep 0.25; }
+# Wait until the program's log holds COUNT lines matching PATTERN (the window prints the
+# app's messages), so that a loaded machine slows the test down instead of failing it.
+wait_for() { # PATTERN [COUNT]
+  local n=${2:-1}
+  for _ in $(seq 1 300); do
+    [ "$(grep -c -- "$1" "$log" || true)" -ge "$n" ] && return 0
+    sleep 0.1
+  done
+  echo "FAIL: waited 30 s for '$1' (x$n) in the program's output"; cat "$log"; exit 1
+}
 
-act key --window "$wid" 3                                        # tool 3: ball
-act mousemove --window "$wid" "$(px -8)" "$(py 6)" click 1       # a ball at (-8, 6)
-act key --window "$wid" 5                                        # tool 5: box
-act mousemove --window "$wid" "$(px 0)" "$(py 9)" click 1        # a box at (0, 9)
-sleep 1.5                                                        # let them fall
-act key --window "$wid" 1                                        # tool 1: move
-act mousemove --window "$wid" "$(px -10)" "$(py 0.5)"            # the scene's ball rests at (-10, 0.5)
-act mousedown --window "$wid" 1                                  # select it and hold it
+act key --window "$wid" 3; wait_for "tool ball"                                  # tool 3: ball
+act mousemove --window "$wid" "$(px -8)" "$(py 6)" click 1; wait_for "Added a ball"   # a ball at (-8, 6)
+act key --window "$wid" 5; wait_for "tool box"                                   # tool 5: box
+act mousemove --window "$wid" "$(px 0)" "$(py 9)" click 1; wait_for "Added a box"     # a box at (0, 9)
+sleep 1.5                                                                        # let them fall
+act key --window "$wid" 1; wait_for "tool move"                                  # tool 1: move
+act mousemove --window "$wid" "$(px -10)" "$(py 0.5)"                            # the scene's ball rests at (-10, 0.5)
+act mousedown --window "$wid" 1; wait_for "Selected body"                        # select it and hold it
 for x in -9.5 -9 -8.5 -8 -7.5 -7; do act mousemove --window "$wid" "$(px "$x")" "$(py 2)"; done
 act mouseup --window "$wid" 1
 act keydown --window "$wid" Right; sleep 0.5; act keyup --window "$wid" Right   # push the selected body
-act key --window "$wid" g                                        # gravity off
+act key --window "$wid" g; wait_for "Gravity off"
 sleep 0.5
-act key --window "$wid" g                                        # gravity on
+act key --window "$wid" g; wait_for "Gravity on"
 sleep 0.5
-act key --window "$wid" p                                        # pause
-act key --window "$wid" F12                                      # screenshot of frame F
-act key --window "$wid" n                                        # one step
-act key --window "$wid" F12                                      # screenshot of frame F + 1
-act key --window "$wid" Escape                                   # close
+act key --window "$wid" p                                                        # pause
+act key --window "$wid" F12; wait_for "screenshot of frame" 1                    # screenshot of frame F
+act key --window "$wid" n                                                        # one step
+act key --window "$wid" F12; wait_for "screenshot of frame" 2                    # screenshot of frame F + 1
+act key --window "$wid" Escape                                                   # close
 for _ in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 wait $pid
 trap - EXIT
