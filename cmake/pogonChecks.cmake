@@ -6,6 +6,7 @@
 #   consumer_find_package   installs the build into a temporary prefix and builds
 #                           cmake/consumer-test against it three ways:
 #                           find_package(pogon), pkg-config, add_subdirectory().
+#   cortex_m_size_and_no_float  (below) the Cortex-M flash limits and no-float check.
 
 if(NOT CMAKE_CROSSCOMPILING AND NOT EMSCRIPTEN
    AND CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$"
@@ -36,4 +37,18 @@ if(POGON_INSTALL AND NOT CMAKE_CROSSCOMPILING AND NOT EMSCRIPTEN)
     LABELS "build"
     TIMEOUT 300
     ENVIRONMENT "CMAKE_COMMAND=${CMAKE_COMMAND};POGON_CC=${CMAKE_C_COMPILER};POGON_CFLAGS=${CMAKE_C_FLAGS} ${CMAKE_C_FLAGS_${_pogon_bt}};POGON_LDFLAGS=${CMAKE_EXE_LINKER_FLAGS};POGON_VERSION=${PROJECT_VERSION};POGON_TRIG_TABLE_BITS=${PG_TRIG_TABLE_BITS};POGON_SHARED=${BUILD_SHARED_LIBS}")
+endif()
+
+# cortex_m_size_and_no_float: tools/size/size_table.py --check builds the library for
+# Cortex-M4 (hard-float ABI) and M0+ with arm-none-eabi-gcc -Os, fails when a flash
+# configuration grew past tools/size/flash_limits.txt (+2 %) or when check-no-float.sh
+# finds floating point in it; skipped (77) without the toolchain. Registered once, in
+# the preset that runs the Cortex-M tests (POGON_CORTEX_M_TESTS, tests/targets).
+find_program(_pogon_python3 python3)
+if(POGON_CORTEX_M_TESTS AND _pogon_python3)
+  add_test(NAME cortex_m_size_and_no_float
+    COMMAND ${_pogon_python3} "${PROJECT_SOURCE_DIR}/tools/size/size_table.py" --check
+            --build "${PROJECT_BINARY_DIR}/cortex-m-size")
+  set_tests_properties(cortex_m_size_and_no_float PROPERTIES
+    LABELS "build;cortex-m" TIMEOUT 600 SKIP_RETURN_CODE 77)
 endif()

@@ -12,6 +12,9 @@
 #   - an SSE/AVX floating-point operation on xmm/ymm/zmm registers (mnemonics ending
 #     in ss/sd/ps/pd/sh/ph: addss, mulsd, movaps, vfmadd231sd, ucomisd, ...),
 #     MXCSR access (ldmxcsr/stmxcsr) or a 3DNow! float op (pfadd, pi2fd, ...),
+# or when the 32-bit ARM (Cortex-M, Thumb) disassembly contains
+#   - a VFP/Neon instruction (every one starts with "v": vldr, vmov, vpush, vadd.f32,
+#     vcvt, vmrs, ...) or a coprocessor 10/11 access (mrc/mcr/ldc/stc p10, p11),
 # or when the library calls or references
 #   - a soft-float helper (__aeabi_f*/__aeabi_d*, __addsf3, __muldf3, __floatsidf,
 #     __fixdfsi, __extendsfdf2, __truncdfsf2, __mulsc3, ...) or
@@ -55,6 +58,7 @@ function softfloat(s) {
          s ~ /^(sqrt|cbrt|hypot|sin|cos|tan|asin|acos|atan|atan2|sinh|cosh|tanh|exp|exp2|expm1|log|log2|log10|log1p|pow|floor|ceil|round|lround|llround|rint|lrint|llrint|nearbyint|trunc|fmod|remainder|fabs|fmin|fmax|fma|ldexp|frexp|modf|copysign|sincos)[fl]?$/
 }
 FNR == 1 { file = FILENAME }
+file ~ /dis$/ && $0 ~ /file format elf32-(little|big)arm/ { arch = "arm" }
 file ~ /dis$/ {
   if ($0 ~ /^In archive /) next
   if ($0 ~ /file format /) { member = $0; sub(/:.*$/, "", member); next }
@@ -78,6 +82,12 @@ file ~ /dis$/ {
   for (j = i + 1; j <= n; j++) ops = ops " " w[j]
   ninsn++
   why = ""
+  if (arch == "arm") {
+    if (m ~ /^v/) why = "VFP/Neon"
+    else if (m ~ /^(mrc|mcr|mrrc|mcrr|ldc|stc|cdp)2?l?$/ && ops ~ /p1[01],/) why = "VFP coprocessor access"
+    if (why != "") { printf "%s %s: %s: %s%s\n", member, fn, why, m, ops; bad++ }
+    next
+  }
   if (m ~ /^f/) why = "x87"
   else if (m ~ /cvt/) why = "float conversion"
   else if (m ~ /^v?(ld|st)mxcsr$/) why = "MXCSR access"
@@ -94,7 +104,7 @@ file ~ /sym$/ {
   }
 }
 END {
-  if (ninsn == 0) { print "check-no-float: no instructions found: is this an x86-64 library?"; exit 2 }
+  if (ninsn == 0) { print "check-no-float: no instructions found: is this an x86-64 or 32-bit ARM library?"; exit 2 }
   printf "check-no-float: %d functions, %d instructions, %d integer vector instructions, %d float uses\n", nfunc, ninsn, vec, bad
   exit bad > 0 ? 1 : 0
 }' "$tmp/dis" "$tmp/sym" || {

@@ -3,7 +3,7 @@
 #
 # Usage: scripts/setup-deps.sh [--check] [GROUP...]
 #   GROUP    one or more of the groups below; default: the groups scripts/test.sh
-#            and scripts/demo.sh need (build test wasm cross desktop)
+#            and scripts/demo.sh need (build test wasm cross desktop cortex-m)
 #   --check  only report what is missing; exit 1 if anything is
 #
 # Idempotent: packages already installed (dpkg says "install ok installed") are left
@@ -45,15 +45,18 @@ PACKAGES=(
   "desktop|xvfb|a virtual X server: the window tests run pogon-desktop under xvfb-run"
   "desktop|xauth|xvfb-run needs it to authorise its clients"
   "desktop|xdotool|the window tests click and press keys in pogon-desktop's window"
+  # --- cortex-m: the firmware of ports/cortex-m under qemu (determinism_cortex_m*) and
+  # the flash limits (cortex_m_flash, tools/size/size_table.py); in the default set.
+  "cortex-m|gcc-arm-none-eabi|bare-metal Cortex-M compiler (ports/cortex-m, tools/size)"
+  "cortex-m|libnewlib-arm-none-eabi|C library (newlib-nano, librdimon for semihosting) for the Cortex-M firmware"
+  "cortex-m|qemu-system-arm|runs the firmware on the mps2-an385 (Cortex-M3, M0+) and mps2-an386 (Cortex-M4) boards"
+  "cortex-m|python3|runs tools/size/size_table.py (the size table and the cortex_m_flash test)"
   # --- optional groups for later work: install with e.g. scripts/setup-deps.sh peers ---
-  "cortex-m|gcc-arm-none-eabi|bare-metal Cortex-M compiler"
-  "cortex-m|libnewlib-arm-none-eabi|C library for the Cortex-M firmware"
-  "cortex-m|qemu-system-arm|runs the firmware on the mps2-an385 (Cortex-M3) board"
   "peers|libbox2d-dev|Box2D 2.4.1, a float peer for the benchmarks"
   "peers|libchipmunk-dev|Chipmunk2D 7.0.3, a float peer for the benchmarks"
   "peers|g++|C++ compiler for the Box2D harness (tools/bench/peers; matter.js comes from npm, node and emcc from the wasm group)"
 )
-DEFAULT_GROUPS=(build test wasm cross desktop)
+DEFAULT_GROUPS=(build test wasm cross desktop cortex-m)
 
 check_only=0
 groups=()

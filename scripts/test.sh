@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # test.sh — THE test command: every test of pogon, from a fresh Debian machine.
 #
-# Usage: scripts/test.sh [PRESET...]     (default: release debug-asan clang)
+# Usage: scripts/test.sh [PRESET...]     (default: release debug-asan clang table8)
 #
 # Installs what is missing (scripts/setup-deps.sh), then for each CMake preset
 # configures, builds and runs ctest (--output-on-failure). A failing preset does not
@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 presets=("$@")
-if [ ${#presets[@]} -eq 0 ]; then presets=(release debug-asan clang); fi
+if [ ${#presets[@]} -eq 0 ]; then presets=(release debug-asan clang table8); fi
 jobs=$(nproc 2>/dev/null || echo 2)
 start=$(date +%s)
 

@@ -1,0 +1,458 @@
+#!/usr/bin/env python3
+"""size_table.py — pogon's flash, RAM, stack and step cost on Cortex-M, measured.
+
+Usage (from anywhere; paths are relative to the repository):
+  tools/size/size_table.py [--write docs/embedded.md] [--build DIR]
+  tools/size/size_table.py --check [--build DIR]      the cortex_m_size_and_no_float test
+  tools/size/size_table.py --update-limits             after a size change on purpose
+
+Builds the library with arm-none-eabi-gcc -mthumb -Os -ffunction-sections
+-fdata-sections -mgeneral-regs-only, newlib-nano, --gc-sections, PG_FAST_DIV64=0, for
+Cortex-M4 (hard-float ABI, where only -mgeneral-regs-only keeps gcc off the FPU
+registers) and Cortex-M0+, and measures:
+  flash   text + data of each configuration (tools/size/*.c) minus a program without
+          pogon (baseline.c): step-only circles and boxes (step_only.c), the core without
+          the file formats (every public function of every source file but scene_file.c
+          and replay_file.c kept with -u), everything (all public functions);
+  RAM     pg_world_memory_size on the target (world_memory.c under qemu-system-arm);
+  stack   the deepest call chain below pg_world_step and below each public function,
+          from gcc's -fcallgraph-info=su (frame sizes as in the .su files; library
+          helpers such as memset and __aeabi_uldivmod count as 0);
+  cost    instructions per pyramid step under qemu -icount shift=0 (step_count.c).
+--write replaces the generated region of the given Markdown file (between
+"<!-- size_table:begin -->" and "<!-- size_table:end -->") with the tables, the date,
+the machine and this command. --check measures the flash only and fails (exit 1) when a
+configuration is larger than its limit in tools/size/flash_limits.txt (the size
+measured when the limit was set, plus 2 %), or when scripts/check-no-float.sh finds
+floating point in either CPU's library; it exits 77 when the toolchain is missing.
+"""
+import argparse
+import concurrent.futures
+import datetime
+import os
+import platform
+import re
+import shutil
+import subprocess
+import sys
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+HERE = os.path.join(ROOT, "tools", "size")
+LIMITS = os.path.join(HERE, "flash_limits.txt")
+CC = "arm-none-eabi-gcc"
+QEMU = "qemu-system-arm"
+CPUS = {  # name: (flags, qemu board)
+    "M4": (["-mcpu=cortex-m4", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"], "mps2-an386"),
+    "M0+": (["-mcpu=cortex-m0plus"], "mps2-an385"),
+}
+COMMON = ["-mthumb", "-mgeneral-regs-only", "-Os", "-std=c99", "-ffunction-sections", "-fdata-sections",
+          "-Iinclude", "-Isrc", "-DPG_TRIG_TABLE_BITS=12", "-DPG_FAST_DIV64=0"]
+LINK = ["-Wl,--gc-sections", "-nostartfiles", "--specs=nano.specs"]
+FILE_FORMATS = ("scene_file.c", "replay_file.c")
+# The issue's budgets (issue 30), KiB of flash.
+BUDGETS = {"step-only": 16, "core": 32, "everything": 64}
+CONFIG_TEXT = {
+    "step-only": "step-only circles and boxes",
+    "core": "core without file formats",
+    "everything": "everything",
+}
+GROWTH = 1.02
+
+
+def run(cmd, **kw):
+    done = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True, **kw)
+    if done.returncode != 0:
+        raise SystemExit("size_table: failed (%d): %s\n%s%s" % (done.returncode, " ".join(cmd), done.stdout, done.stderr))
+    return done.stdout
+
+
+def library_sources():
+    return sorted(os.path.join("src", f) for f in os.listdir(os.path.join(ROOT, "src")) if f.endswith(".c"))
+
+
+def compile_all(build, cpu, jobs):
+    """Objects of the library for one CPU, with their .su and .ci files beside them."""
+    out = os.path.join(build, cpu.replace("+", "plus"))
+    os.makedirs(out, exist_ok=True)
+    flags = CPUS[cpu][0] + COMMON + ["-fstack-usage", "-fcallgraph-info=su"]
+
+    def one(src):
+        obj = os.path.join(out, os.path.basename(src)[:-2] + ".o")
+        run([CC] + flags + ["-c", src, "-o", obj])
+        return obj
+
+    with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+        objects = list(pool.map(one, library_sources()))
+    return out, objects
+
+
+def archive(out, objects):
+    lib = os.path.join(out, "libpogon.a")
+    if os.path.exists(lib):
+        os.remove(lib)
+    run(["arm-none-eabi-ar", "rcs", lib] + objects)
+    return lib
+
+
+def public_functions(objects, exclude=()):
+    names = []
+    for obj in objects:
+        if os.path.basename(obj)[:-2] + ".c" in exclude:
+            continue
+        for line in run(["arm-none-eabi-nm", "-g", "--defined-only", obj]).splitlines():
+            parts = line.split()
+            if len(parts) == 3 and parts[1] == "T":
+                names.append(parts[2])
+    return sorted(names)
+
+
+def flash_of(elf):
+    line = run(["arm-none-eabi-size", "-B", elf]).splitlines()[1].split()
+    return int(line[0]) + int(line[1])
+
+
+def link_config(out, cpu, lib, main_src, keep, name):
+    elf = os.path.join(out, name + ".elf")
+    cmd = [CC] + CPUS[cpu][0] + COMMON + LINK + ["--specs=nosys.specs", "-e", "main",
+                                                 "-Wl,-Map=" + elf[:-4] + ".map", main_src, lib, "-o", elf]
+    cmd += ["-Wl,--undefined=" + f for f in keep]
+    run(cmd)
+    return elf
+
+
+def holders(mapfile, top=4):
+    """The library objects that take the most flash in a linked program (from the map)."""
+    sizes = {}
+    pattern = re.compile(r"^\s*(\.(?:text|rodata|data)\S*)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+\S*libpogon\.a\((\S+)\.o\)")
+    pending = None
+    in_discard = True
+    with open(mapfile) as f:
+        for line in f:
+            if line.startswith("Linker script and memory map"):
+                in_discard = False
+            if in_discard:
+                continue
+            m = pattern.match(line)
+            if m and (m.group(1) or pending):
+                if int(m.group(2), 16) != 0:
+                    sizes[m.group(4)] = sizes.get(m.group(4), 0) + int(m.group(3), 16)
+                pending = None
+            elif re.match(r"^\s*\.(text|rodata|data)\S*\s*$", line):
+                pending = line.strip()  # long section names put the numbers on the next line
+            else:
+                pending = None
+    return sorted(sizes.items(), key=lambda kv: -kv[1])[:top]
+
+
+def measure_flash(build, jobs):
+    result = {}
+    for cpu in CPUS:
+        out, objects = compile_all(build, cpu, jobs)
+        lib = archive(out, objects)
+        base = flash_of(link_config(out, cpu, lib, os.path.join(HERE, "baseline.c"), [], "baseline"))
+        core = public_functions(objects, FILE_FORMATS)
+        every = public_functions(objects)
+        configs = {
+            "step-only": (os.path.join(HERE, "step_only.c"), []),
+            "core": (os.path.join(HERE, "baseline.c"), core),
+            "everything": (os.path.join(HERE, "baseline.c"), every),
+        }
+        for name, (src, keep) in configs.items():
+            elf = link_config(out, cpu, lib, src, keep, name)
+            result[(name, cpu)] = (flash_of(elf) - base, holders(elf[:-4] + ".map"))
+    return result
+
+
+def read_limits():
+    limits = {}
+    if not os.path.exists(LIMITS):
+        return limits
+    with open(LIMITS) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if line:
+                name, cpu, measured = line.split()
+                limits[(name, cpu)] = int(measured)
+    return limits
+
+
+def write_limits(flash):
+    with open(LIMITS, "w") as f:
+        f.write("# Flash (bytes) of each configuration when its limit was set, by tools/size/size_table.py\n"
+                "# --update-limits; the cortex_m_size_and_no_float test fails above this + 2 %. Lower them when the\n"
+                "# code shrinks; raise them only for a growth that is worth its flash, in its own commit.\n")
+        for (name, cpu), (size, _) in sorted(flash.items()):
+            f.write("%s %s %d\n" % (name, cpu, size))
+
+
+def firmware(build, cpu, sources, name):
+    out = os.path.join(build, cpu.replace("+", "plus"))
+    os.makedirs(out, exist_ok=True)
+    elf = os.path.join(out, name + ".elf")
+    run([CC] + CPUS[cpu][0] + COMMON + LINK + [
+        "-Itools/scenes", "-Iports/cortex-m", "--specs=rdimon.specs", "-Tports/cortex-m/mps2.ld",
+        "ports/cortex-m/startup.c", "ports/cortex-m/syscalls.c", "tools/scenes/scenes.c"] + sources +
+        library_sources() + ["-o", elf])
+    return elf
+
+
+def qemu(cpu, elf, icount=False):
+    cmd = [QEMU, "-M", CPUS[cpu][1], "-nographic", "-semihosting", "-kernel", elf]
+    if icount:
+        cmd[1:1] = ["-icount", "shift=0"]
+    return run(cmd, timeout=600)
+
+
+def measure_memory(build):
+    elf = firmware(build, "M4", ["tools/size/world_memory.c"], "world_memory")
+    sizes = {}
+    for line in qemu("M4", elf).splitlines():
+        p = line.split()
+        if p and p[0] == "memory":
+            sizes[tuple(int(x) for x in p[1:4])] = int(p[4])
+    return sizes
+
+
+def measure_steps(build):
+    result = {}
+    for cpu in CPUS:
+        elf = firmware(build, cpu, ["tools/size/step_count.c"], "step_count")
+        text = qemu(cpu, elf, icount=True)
+        cal = re.search(r"^calibration (\d+) (\d+)$", text, re.M)
+        pyr = re.search(r"^pyramid (\d+) (\d+) (\d+) (\d+)$", text, re.M)
+        if not cal or not pyr:
+            raise RuntimeError("step_count on %s printed:\n%s" % (cpu, text))
+        per_tick = int(cal.group(1)) / int(cal.group(2))
+        steps = int(pyr.group(3)) - int(pyr.group(2)) + 1
+        result[cpu] = (int(pyr.group(4)) * per_tick / steps, per_tick, pyr.group(1), pyr.group(2), pyr.group(3))
+    return result
+
+
+def call_graph(out):
+    """Frames and edges from the .ci files (gcc -fcallgraph-info=su)."""
+    frames, edges, names, files = {}, {}, {}, {}
+    node = re.compile(r'^node: \{ title: "([^"]+)" label: "([^\\"]+)\\n([^:"]*):[^"]*?\\n(\d+) bytes \(([^)]*)\)"')
+    edge = re.compile(r'^edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"')
+    for f in sorted(os.listdir(out)):
+        if not f.endswith(".ci"):
+            continue
+        with open(os.path.join(out, f)) as fh:
+            for line in fh:
+                m = node.match(line)
+                if m:
+                    frames[m.group(1)] = (int(m.group(4)), m.group(5))
+                    names[m.group(1)] = m.group(2)
+                    files[m.group(1)] = os.path.basename(m.group(3))
+                    continue
+                m = edge.match(line)
+                if m:
+                    edges.setdefault(m.group(1), set()).add(m.group(2))
+    return frames, edges, names, files
+
+
+def deepest(root, frames, edges, memo, stack=()):
+    """(bytes, chain, bounded) of the deepest call chain from root; recursion is cut and
+    reported as not bounded."""
+    if root in memo:
+        return memo[root]
+    if root in stack:
+        return (0, [root + " (recursion)"], False)
+    own, kind = frames.get(root, (0, "static"))
+    best = (0, [], True)
+    for callee in sorted(edges.get(root, ())):
+        sub = deepest(callee, frames, edges, memo, stack + (root,))
+        if sub[0] > best[0]:
+            best = sub
+    bounded = best[2] and kind.startswith("static") or kind == "dynamic,bounded"
+    result = (own + best[0], [root] + best[1], bounded)
+    memo[root] = result
+    return result
+
+
+def measure_stack(build):
+    out = os.path.join(build, "M4")
+    frames, edges, names, files = call_graph(out)
+    memo = {}
+    public = [t for t in frames if ":" not in t and t.startswith("pg_")]
+    per_public = sorted(((deepest(t, frames, edges, memo), t) for t in public), key=lambda x: -x[0][0])
+    per_core = [p for p in per_public if files.get(p[1]) not in FILE_FORMATS]
+    step = deepest("pg_world_step", frames, edges, memo)
+    # which functions below pg_world_step call a 64-bit division helper
+    seen, todo, dividers = set(), ["pg_world_step"], set()
+    while todo:
+        f = todo.pop()
+        if f in seen:
+            continue
+        seen.add(f)
+        for callee in edges.get(f, ()):
+            if callee in ("__aeabi_ldivmod", "__aeabi_uldivmod", "__divdi3", "__udivdi3", "__moddi3", "__umoddi3"):
+                dividers.add(names.get(f, f).split(".")[0])
+            todo.append(callee)
+    largest = sorted(((frames[t][0], names[t]) for t in frames), reverse=True)[:6]
+    short = lambda chain: " > ".join(names.get(c, c) for c in chain)
+    return step, per_public[:3] + per_core[:3], largest, short, sorted(dividers)
+
+
+def kib(n):
+    return "%.1f KiB" % (n / 1024.0)
+
+
+def markdown(flash, memory, stack, steps, command):
+    now = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC")
+    cpu_model = platform.machine()
+    try:
+        with open("/proc/cpuinfo") as f:
+            m = re.search(r"^model name\s*:\s*(.*)$", f.read(), re.M)
+            if m:
+                cpu_model += ", " + m.group(1).strip()
+    except OSError:
+        pass
+    compiler = run([CC, "--version"]).splitlines()[0]
+    qemu_version = run([QEMU, "--version"]).splitlines()[0]
+    limits = read_limits()
+    L = []
+    L.append("Generated %s on %s by `%s`; %s, %s." % (now, cpu_model, command, compiler, qemu_version))
+    L.append("")
+    L.append("Flash: `-mthumb -Os -ffunction-sections -fdata-sections -mgeneral-regs-only`, newlib-nano, "
+             "`--gc-sections`, 12-bit sine table, `PG_FAST_DIV64=0`; what pogon adds to a program "
+             "without it (tools/size/baseline.c), libgcc helpers included.")
+    L.append("")
+    L.append("| configuration | budget | Cortex-M4 | Cortex-M0+ | status | largest parts (M4) |")
+    L.append("| --- | --- | --- | --- | --- | --- |")
+    for name in ("step-only", "core", "everything"):
+        budget = BUDGETS[name] * 1024
+        m4, m0 = flash[(name, "M4")][0], flash[(name, "M0+")][0]
+        worst = max(m4, m0)
+        if worst <= budget:
+            status = "within budget"
+        else:
+            status = "over budget by %s (M0+: %s)" % (kib(m4 - budget), kib(m0 - budget)) if m4 > budget \
+                else "M4 within, M0+ over by %s" % kib(m0 - budget)
+        parts = ", ".join("%s.c %s" % (o, kib(s)) for o, s in flash[(name, "M4")][1])
+        L.append("| %s | %d KiB | %s | %s | %s | %s |" % (CONFIG_TEXT[name], BUDGETS[name], kib(m4), kib(m0), status, parts))
+    L.append("")
+    if limits:
+        L.append("The cortex_m_size_and_no_float test holds each figure under its limit in tools/size/flash_limits.txt "
+                 "(+2 %%): %s." % ", ".join("%s %s %d B" % (n, c, v) for (n, c), v in sorted(limits.items())))
+        L.append("")
+    if memory:
+        b = memory[(33, 32, 128)] - memory[(32, 32, 128)]
+        s = memory[(32, 33, 128)] - memory[(32, 32, 128)]
+        c = memory[(32, 32, 129)] - memory[(32, 32, 128)]
+        big = memory[(1025, 1024, 4096)] - memory[(1024, 1024, 4096)]
+        pyr = [k for k in memory if k not in ((32, 32, 128), (33, 32, 128), (32, 33, 128), (32, 32, 129),
+                                               (1024, 1024, 4096), (1025, 1024, 4096))]
+        L.append("RAM (`pg_world_memory_size` on the Cortex-M4, 32-bit pointers):")
+        L.append("")
+        L.append("| world | bytes |")
+        L.append("| --- | --- |")
+        L.append("| 32 bodies, 32 shapes, 128 contacts | %d (%s) |" % (memory[(32, 32, 128)], kib(memory[(32, 32, 128)])))
+        for k in pyr:
+            L.append("| pyramid of 20 rows: %d bodies, %d shapes, %d contacts | %d (%s) |" % (k + (memory[k], kib(memory[k]))))
+        L.append("| 1024 bodies, 1024 shapes, 4096 contacts (the defaults) | %d (%s) |" % (memory[(1024, 1024, 4096)], kib(memory[(1024, 1024, 4096)])))
+        L.append("| one more body slot (at 32 / at 1024) | %d / %d |" % (b, big))
+        L.append("| one more shape slot | %d |" % s)
+        L.append("| one more contact slot | %d |" % c)
+        L.append("")
+    if stack:
+        step, public, largest, short, dividers = stack
+        L.append("Stack (Cortex-M4 -Os, deepest call chain from the .su frame sizes; library helpers count 0): "
+                 "pg_world_step, the three deepest public calls, and the three deepest outside the file formats.")
+        L.append("")
+        L.append("| entry | bytes | chain |")
+        L.append("| --- | --- | --- |")
+        L.append("| pg_world_step | %d%s | %s |" % (step[0], "" if step[2] else " (not bounded)", short(step[1])))
+        for (depth, chain, bounded), _ in public:
+            L.append("| %s | %d%s | %s |" % (chain[0], depth, "" if bounded else " (not bounded)", short(chain)))
+        L.append("")
+        L.append("Largest frames: %s." % ", ".join("%s %d B" % (n, b) for b, n in largest))
+        L.append("")
+        L.append("64-bit divisions (`__aeabi_ldivmod`, `__aeabi_uldivmod`) below pg_world_step, with "
+                 "`PG_FAST_DIV64=0`: called from %s." % (", ".join(dividers) if dividers else "nowhere"))
+        L.append("")
+    if steps:
+        L.append("Step cost: the pyramid of %s rows (210 boxes, all awake), steps %s to %s, under "
+                 "`qemu-system-arm -icount shift=0` (tools/size/step_count.c; instructions, not cycles):"
+                 % (steps["M4"][2], steps["M4"][3], steps["M4"][4]))
+        L.append("")
+        L.append("| CPU | instructions per step | instructions per SysTick tick (calibrated) |")
+        L.append("| --- | --- | --- |")
+        for cpu in CPUS:
+            L.append("| Cortex-%s | %.2f M | %.1f |" % (cpu, steps[cpu][0] / 1e6, steps[cpu][1]))
+        L.append("")
+    return "\n".join(L)
+
+
+def write_region(path, text):
+    begin, end = "<!-- size_table:begin -->", "<!-- size_table:end -->"
+    with open(path) as f:
+        doc = f.read()
+    if begin not in doc or end not in doc:
+        raise SystemExit("size_table: %s has no %s ... %s region" % (path, begin, end))
+    head, rest = doc.split(begin, 1)
+    _, tail = rest.split(end, 1)
+    with open(path, "w") as f:
+        f.write(head + begin + "\n" + text + "\n" + end + tail)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--write", metavar="MARKDOWN", help="replace the generated region of this file")
+    ap.add_argument("--build", default=os.path.join(ROOT, "build", "size"), help="work directory")
+    ap.add_argument("--check", action="store_true", help="flash only: fail above the limits")
+    ap.add_argument("--update-limits", action="store_true", help="write today's flash as the limits")
+    ap.add_argument("--jobs", type=int, default=2)
+    args = ap.parse_args()
+    for tool in (CC, QEMU) if not args.check else (CC,):
+        if shutil.which(tool) is None:
+            print("size_table: %s not found (scripts/setup-deps.sh cortex-m installs it): skipped" % tool)
+            return 77
+    build = os.path.abspath(args.build)
+    flash = measure_flash(build, args.jobs)
+    for (name, cpu), (size, parts) in sorted(flash.items()):
+        print("flash %-10s %-4s %7d B  budget %d KiB  largest: %s" % (
+            name, cpu, size, BUDGETS[name], ", ".join("%s %d" % p for p in parts)))
+    if args.update_limits:
+        write_limits(flash)
+        print("size_table: wrote %s" % LIMITS)
+    if args.check:
+        limits = read_limits()
+        status = 0
+        for key, (size, _) in sorted(flash.items()):
+            if key not in limits:
+                print("FAIL: no limit for %s %s in %s" % (key + (LIMITS,)))
+                status = 1
+                continue
+            allowed = int(limits[key] * GROWTH)
+            verdict = "ok" if size <= allowed else "FAIL"
+            print("%s: %s %s %d B, limit %d B (%d + 2 %%), budget %d B" % (
+                verdict, key[0], key[1], size, allowed, limits[key], BUDGETS[key[0]] * 1024))
+            if size > allowed:
+                status = 1
+        for cpu in CPUS:
+            lib = os.path.join(build, cpu.replace("+", "plus"), "libpogon.a")
+            check = subprocess.run(["sh", os.path.join(ROOT, "scripts", "check-no-float.sh"), lib, "arm-none-eabi-objdump"],
+                                   cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True)
+            print("Cortex-%s: %s" % (cpu, check.stdout.strip().replace("\n", "\n  ")))
+            if check.returncode != 0:
+                status = 1
+        return status
+    memory = measure_memory(build)
+    for k, v in sorted(memory.items()):
+        print("memory %s %d" % (k, v))
+    stack = measure_stack(build)
+    print("stack pg_world_step %d: %s" % (stack[0][0], stack[3](stack[0][1])))
+    steps = measure_steps(build)
+    for cpu, v in steps.items():
+        print("pyramid step %s: %.0f instructions (%.2f per tick)" % (cpu, v[0], v[1]))
+    text = markdown(flash, memory, stack, steps, "tools/size/size_table.py" + (" --write " + args.write if args.write else ""))
+    if args.write:
+        write_region(os.path.join(ROOT, args.write) if not os.path.isabs(args.write) else args.write, text)
+        print("size_table: wrote %s" % args.write)
+    else:
+        print(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
