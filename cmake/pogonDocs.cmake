@@ -4,6 +4,7 @@
 #   test docs_api_complete       Doxygen over the public headers warns about nothing:
 #                                every public function, type, field and enumerator is
 #                                documented
+#   test docs_readme_example     the README's C example compiles and runs against the library
 #   test docs_generated_regions  every generated table in README.md and docs/ is what its
 #                                tool renders from the committed results (tools/docs/regions.js)
 find_program(POGON_DOXYGEN doxygen)
@@ -45,4 +46,14 @@ if(POGON_TESTING AND TARGET pogon-accuracy)
     add_test(NAME docs_generated_regions COMMAND sh -c "echo 'node not found: install it with scripts/setup-deps.sh'; exit 77")
     set_tests_properties(docs_generated_regions PROPERTIES LABELS "docs" SKIP_RETURN_CODE 77)
   endif()
+endif()
+
+# The README's example, compiled as a user would (static library builds only: the test
+# links the archive directly).
+if(POGON_TESTING AND NOT BUILD_SHARED_LIBS AND NOT CMAKE_CROSSCOMPILING)
+  add_test(NAME docs_readme_example
+    COMMAND ${CMAKE_COMMAND} -DREADME=${PROJECT_SOURCE_DIR}/README.md -DOUT=${PROJECT_BINARY_DIR}/readme-example
+            -DCC=${CMAKE_C_COMPILER} "-DCFLAGS=${CMAKE_C_FLAGS}" -DINCLUDE=${PROJECT_SOURCE_DIR}/include -DLIB=$<TARGET_FILE:pogon>
+            -P ${PROJECT_SOURCE_DIR}/cmake/pogonReadmeExample.cmake)
+  set_tests_properties(docs_readme_example PROPERTIES LABELS "docs" TIMEOUT 120)
 endif()
