@@ -46,7 +46,8 @@ if [ -n "$config" ]; then
 else
   "$cmake" --install "$build" --prefix "$prefix"
 fi
-for f in include/pogon/fixed.h include/pogon/config.h; do
+for f in include/pogon/fixed.h include/pogon/config.h include/pogon/version.h \
+         include/pogon/detail/fixed_internal.h; do
   [ -f "$prefix/$f" ] || fail "$f was not installed"
 done
 pc=$(find "$prefix" -name pogon.pc | head -n 1)

@@ -17,6 +17,7 @@ pg_body_def pg_default_body_def(void)
     d.fixed_rotation = 0;
     d.allow_sleep = 1;
     d.awake = 1;
+    d.pg__cookie = PG__DEF_COOKIE;
     d.user_data = 0;
     return d;
 }
@@ -82,6 +83,9 @@ static pg_fix outside_component(pg_vec2 p) { return p.x < -PG_ENV_MAX_POSITION |
 static pg_result check_body_def(const pg_world *world, const pg_body_def *d)
 {
     pg_result r;
+    if (d->pg__cookie != PG__DEF_COOKIE)
+        return pg__fail(world, PG_ERR_INVALID_ARGUMENT,
+                        "the body def was not made by pg_default_body_def(): start from pg_default_body_def() and change the fields you need");
     if (d->type != PG_BODY_STATIC && d->type != PG_BODY_KINEMATIC && d->type != PG_BODY_DYNAMIC)
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
     if (!in_position_envelope(d->position))

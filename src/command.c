@@ -23,6 +23,9 @@ pg_command pg_command_init(pg_command_kind kind)
     size_t i;
     for (i = 0; i < sizeof c; ++i) p[i] = 0; /* padding too: a command has one byte image */
     c.kind = kind;
+    /* the defs start from their defaults, as every def must (the defs have no padding) */
+    c.body_def = pg_default_body_def();
+    c.shape_def = pg_default_shape_def();
     return c;
 }
 

@@ -146,6 +146,7 @@ pg_shape_def pg_default_shape_def(void)
     d.restitution = 0;
     d.category = 1u;
     d.mask = 0xFFFFFFFFu;
+    d.pg__cookie = PG__DEF_COOKIE;
     return d;
 }
 
@@ -177,6 +178,9 @@ void pg__shape_build_local(const pg_geometry *g, pg_geom *out)
 
 static pg_result check_shape_def(const pg_world *world, const pg_body *b, const pg_shape_def *d)
 {
+    if (d->pg__cookie != PG__DEF_COOKIE)
+        return pg__fail(world, PG_ERR_INVALID_ARGUMENT,
+                        "the shape def was not made by pg_default_shape_def(): start from pg_default_shape_def() and change the fields you need");
     if (b->type == PG_BODY_DYNAMIC && (d->density < PG_ENV_MIN_DENSITY || d->density > PG_ENV_MAX_DENSITY))
         return pg__fail_value(world, PG_ERR_ENVELOPE, "density", d->density, "kg/m^2 is outside 0.1..100 for a dynamic body");
     if (d->density < 0 || d->density > PG_ENV_MAX_DENSITY)

@@ -91,6 +91,7 @@ pg_world_def pg_default_world_def(void)
     d.max_bodies = 1024;
     d.max_shapes = 2048;
     d.max_contacts = 4096;
+    d.pg__cookie = PG__DEF_COOKIE;
     return d;
 }
 
@@ -98,6 +99,8 @@ pg_world_def pg_default_world_def(void)
 
 static const char *check_def(const pg_world_def *d)
 {
+    if (d->pg__cookie != PG__DEF_COOKIE)
+        return "the def was not made by pg_default_world_def(): start from pg_default_world_def() and change the fields you need";
     if (d->step_hz < 1 || d->step_hz > 1000) return "step_hz must be 1..1000";
     if (d->substeps < 1 || d->substeps > 16) return "substeps must be 1..16";
     if ((d->effects & ~PG_EFFECTS_ALL) != 0) return "effects has bits that are not PG_EFFECT_*";

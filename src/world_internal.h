@@ -15,6 +15,13 @@
 
 #define PG_NULL_INDEX 0xFFFFFFFFu
 
+/* The value pg_default_world_def(), pg_default_body_def() and pg_default_shape_def() put in
+ * a def's pg__cookie, and every function that takes a def checks: a def that did not start
+ * from its defaults function (a zeroed struct, say, whose gravity_scale 0 or capacities 0
+ * would otherwise be taken at face value) is refused with a message naming the function.
+ * Not state: never hashed, saved or encoded. ("pogn") */
+#define PG__DEF_COOKIE 0x706F676Eu
+
 /* Linear slop and speculative distance: contacts begin this far apart so resting bodies
  * keep their manifold without jitter. Geometry has no skin: boxes placed edge to edge
  * do not start overlapping. */

@@ -1,4 +1,5 @@
-/* pogon/config.h — compile-time switches.
+/** @file
+ * pogon/config.h — compile-time switches.
  *
  * Define these before building the library (CMake cache options of the same name set
  * them for you). Each one trades accuracy or features for time and size; the
@@ -7,7 +8,7 @@
 #ifndef POGON_CONFIG_H
 #define POGON_CONFIG_H
 
-/* Entries per full turn of the sine table, as a power of two: 8 (256 entries, 1 KiB)
+/** Entries per full turn of the sine table, as a power of two: 8 (256 entries, 1 KiB)
  * to 12 (4096 entries, 16 KiB). Sine and cosine interpolate linearly between entries;
  * the interpolation error is about (2 pi / 2^bits)^2 / 8: 4.7e-6 at 10 bits and 2.9e-7
  * at 12. The default is 12 because rotations scale vertices by up to that error: at
@@ -20,7 +21,7 @@
 #error "PG_TRIG_TABLE_BITS must be between 8 and 12"
 #endif
 
-/* How pg_isqrt64 (and so every length, distance and normalisation) computes its
+/** How pg_isqrt64 (and so every length, distance and normalisation) computes its
  * integer square root. 1 (default): a table seed, one Newton step with a 64-bit
  * division and an exact correction, several times faster where 64-bit division is a
  * hardware instruction (x86-64, AArch64, ...). 0: the digit-by-digit loop (up to 32

@@ -1,4 +1,5 @@
-/* pogon/pogon.h — a deterministic 2D rigid-body world.
+/** @file
+ * pogon/pogon.h — a deterministic 2D rigid-body world.
  *
  * WHAT IT IS
  *   Bodies made of convex shapes (circle, capsule, segment, box, convex polygon up to 8
@@ -57,175 +58,226 @@
 
 #include "pogon/config.h"
 #include "pogon/fixed.h"
+#include "pogon/version.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-#define POGON_VERSION_MAJOR 0
-#define POGON_VERSION_MINOR 1
-#define POGON_VERSION_PATCH 0
-
 /* ---- results ------------------------------------------------------------------ */
+/** What a call did: PG_OK (0) or the reason it refused; pg_result_message() explains a
+ * code and pg_world_last_error() the detail. A failing call changes nothing. */
 typedef enum pg_result {
-    PG_OK = 0,
-    PG_ERR_NULL,             /* a required pointer argument is NULL */
-    PG_ERR_INVALID_ARGUMENT, /* a value is not one the function accepts */
-    PG_ERR_STALE_HANDLE,     /* the handle names an object that no longer exists */
-    PG_ERR_CAPACITY,         /* a pool given at creation is full */
-    PG_ERR_MEMORY,           /* the memory block given is too small */
-    PG_ERR_ENVELOPE,         /* a value is outside the documented envelope */
-    PG_ERR_DEGENERATE,       /* geometry with no area or length, or collinear points */
-    PG_ERR_NOT_CONVEX,       /* polygon vertices not convex (pg_geometry_polygon accepts
+    PG_OK = 0,               /**< success */
+    PG_ERR_NULL,             /**< a required pointer argument is NULL */
+    PG_ERR_INVALID_ARGUMENT, /**< a value is not one the function accepts */
+    PG_ERR_STALE_HANDLE,     /**< the handle names an object that no longer exists */
+    PG_ERR_CAPACITY,         /**< a pool given at creation is full */
+    PG_ERR_MEMORY,           /**< the memory block given is too small */
+    PG_ERR_ENVELOPE,         /**< a value is outside the documented envelope */
+    PG_ERR_DEGENERATE,       /**< geometry with no area or length, or collinear points */
+    PG_ERR_NOT_CONVEX,       /**< polygon vertices not convex (pg_geometry_polygon accepts
                                 either winding; a geometry filled in by hand must be
                                 counter-clockwise) */
-    PG_ERR_BODY_TYPE,        /* the operation does not apply to this body type */
-    PG_ERR_NOT_FOUND,        /* a query found nothing (e.g. no free position) */
-    PG_RESULT_COUNT
+    PG_ERR_BODY_TYPE,        /**< the operation does not apply to this body type */
+    PG_ERR_NOT_FOUND,        /**< a query found nothing (e.g. no free position) */
+    PG_RESULT_COUNT          /**< the number of codes (not a result) */
 } pg_result;
 
-/* "PG_ERR_CAPACITY" etc. and a sentence saying what to do about it. */
+/** The code's name, e.g. "PG_ERR_CAPACITY" (static text). */
 const char *pg_result_name(pg_result r);
+/** A sentence saying what the code means and what to do about it (static text). */
 const char *pg_result_message(pg_result r);
 
 /* ---- handles ---------------------------------------------------------------------- */
-typedef struct pg_body_id { uint32_t index, generation; } pg_body_id;
-typedef struct pg_shape_id { uint32_t index, generation; } pg_shape_id;
+/** A handle to a body: a slot and its generation, so a handle to a destroyed body is
+ * detected (PG_ERR_STALE_HANDLE). The zero handle is never valid. */
+typedef struct pg_body_id {
+    uint32_t index;      /**< the slot */
+    uint32_t generation; /**< the slot's generation when the body was made */
+} pg_body_id;
+/** A handle to a shape, as pg_body_id. */
+typedef struct pg_shape_id {
+    uint32_t index;      /**< the slot */
+    uint32_t generation; /**< the slot's generation when the shape was made */
+} pg_shape_id;
+/** Nonzero when a and b name the same body. */
 static inline int pg_body_id_equal(pg_body_id a, pg_body_id b) { return a.index == b.index && a.generation == b.generation; }
 
+/** A world: opaque, it lives in the memory block given to pg_world_create(). */
 typedef struct pg_world pg_world;
 
 /* ---- effects: what a step simulates ------------------------------------------------ */
-/* A step leaves out the work of an effect that is off (it does not multiply by zero). */
-#define PG_EFFECT_GRAVITY     (1u << 0) /* gravity acceleration */
-#define PG_EFFECT_ROTATION    (1u << 1) /* bodies turn; off: every body keeps its angle */
-#define PG_EFFECT_FRICTION    (1u << 2) /* Coulomb friction at contacts */
-#define PG_EFFECT_RESTITUTION (1u << 3) /* bounce */
-#define PG_EFFECT_DAMPING     (1u << 4) /* linear and angular damping */
-#define PG_EFFECT_SLEEPING    (1u << 5) /* resting islands fall asleep and cost nothing */
-#define PG_EFFECT_CONTINUOUS  (1u << 6) /* fast bodies sweep their path within the substeps:
+/** A step leaves out the work of an effect that is off (it does not multiply by zero). */
+#define PG_EFFECT_GRAVITY     (1u << 0) /**< gravity acceleration */
+#define PG_EFFECT_ROTATION    (1u << 1) /**< bodies turn; off: every body keeps its angle */
+#define PG_EFFECT_FRICTION    (1u << 2) /**< Coulomb friction at contacts */
+#define PG_EFFECT_RESTITUTION (1u << 3) /**< bounce */
+#define PG_EFFECT_DAMPING     (1u << 4) /**< linear and angular damping */
+#define PG_EFFECT_SLEEPING    (1u << 5) /**< resting islands fall asleep and cost nothing */
+#define PG_EFFECT_CONTINUOUS  (1u << 6) /**< fast bodies sweep their path within the substeps:
                                            speculative contacts so they cannot tunnel; a
                                            body turning too far for those is put back at
                                            its time of impact with static shapes */
-#define PG_EFFECTS_ALL        0x7Fu
+#define PG_EFFECTS_ALL        0x7Fu     /**< every effect: the default */
 
 /* ---- world ---------------------------------------------------------------------------- */
+/** A world's settings and capacities. Start from pg_default_world_def() and change the
+ * fields you need: a def that did not come from it is refused. */
 typedef struct pg_world_def {
-    pg_vec2 gravity;            /* m/s^2, default (0, -10) */
-    uint32_t step_hz;           /* steps per simulated second, default 60 (1..1000) */
-    uint32_t substeps;          /* solver substeps per step, default 4 (1..16) */
-    uint32_t effects;           /* PG_EFFECT_* bits, default PG_EFFECTS_ALL */
-    pg_fix contact_hertz;       /* contact stiffness, default 30 Hz; twice it against a side that cannot move
+    pg_vec2 gravity;            /**< m/s^2, default (0, -10) */
+    uint32_t step_hz;           /**< steps per simulated second, default 60 (1..1000) */
+    uint32_t substeps;          /**< solver substeps per step, default 4 (1..16) */
+    uint32_t effects;           /**< PG_EFFECT_* bits, default PG_EFFECTS_ALL */
+    pg_fix contact_hertz;       /**< contact stiffness, default 30 Hz; twice it against a side that cannot move
                                    and between masses 4:1 or more; both capped at a quarter of the substep rate */
-    pg_fix contact_damping_ratio; /* default 10 */
-    pg_fix contact_push_max;    /* fastest push-out of overlap, default 3 m/s; of it, only
+    pg_fix contact_damping_ratio; /**< default 10 */
+    pg_fix contact_push_max;    /**< fastest push-out of overlap, default 3 m/s; of it, only
                                    what holds a contact's load (plus 1/32 of this) becomes
                                    velocity, the rest moves bodies apart without momentum */
-    pg_fix restitution_threshold; /* approach speeds below this do not bounce, default 1 m/s */
-    pg_fix max_linear_speed;    /* cap, default 400 m/s, counted in stats.speed_clamps */
-    pg_fix sleep_linear_tolerance;  /* default 0.05 m/s */
-    pg_fix sleep_angular_tolerance; /* default 2 degrees/s (0.0349 rad/s). A body rests when
+    pg_fix restitution_threshold; /**< approach speeds below this do not bounce, default 1 m/s */
+    pg_fix max_linear_speed;    /**< cap, default 400 m/s, counted in stats.speed_clamps */
+    pg_fix sleep_linear_tolerance;  /**< default 0.05 m/s */
+    pg_fix sleep_angular_tolerance; /**< default 2 degrees/s (0.0349 rad/s). A body rests when
                                    its centre moves no faster than the linear tolerance and
                                    either it turns no faster than the angular one or no
                                    point of it moves faster than the linear one
                                    (|v| + extent |w|: a small ball rolling slowly rests) */
-    pg_fix time_to_sleep;       /* seconds at rest before an island sleeps, default 0.5;
+    pg_fix time_to_sleep;       /**< seconds at rest before an island sleeps, default 0.5;
                                    counted in steps, to the nearest (30 at 60 Hz) */
-    uint32_t max_bodies;        /* capacities, default 1024 / 2048 / 4096 */
-    uint32_t max_shapes;
-    uint32_t max_contacts;
+    uint32_t max_bodies;        /**< most bodies at once, default 1024 */
+    uint32_t max_shapes;        /**< most shapes at once, default 2048 */
+    uint32_t max_contacts;      /**< most contacts at once, default 4096 */
+    uint32_t pg__cookie;        /**< internal: set by pg_default_world_def(), which every def
+                                   must start from; a def without it is refused */
 } pg_world_def;
 
+/** The default settings (see each field): every world def starts from here. */
 pg_world_def pg_default_world_def(void);
 
-/* Bytes of memory a world with these capacities needs (0 if the def is invalid). */
+/** Bytes of memory a world with these capacities needs (0 if the def is invalid). */
 size_t pg_world_memory_size(const pg_world_def *def);
 
-/* Why a def is invalid, e.g. "substeps must be 1..16"; NULL when it is valid. This is
+/** Why a def is invalid, e.g. "substeps must be 1..16"; NULL when it is valid. This is
  * the check pg_world_memory_size and pg_world_create make (they return 0 and
  * PG_ERR_INVALID_ARGUMENT, and have no world to keep the message in). */
 const char *pg_world_def_problem(const pg_world_def *def);
 
-/* Create a world inside `memory` (at least pg_world_memory_size bytes, aligned to 8).
+/** Create a world inside `memory` (at least pg_world_memory_size bytes, aligned to 8).
  * The world lives in that block; it never allocates. There is no destroy: release
  * the block when done. */
 pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_size, pg_world **out);
 
-/* Advance one fixed step of 1/step_hz seconds. */
+/** Advance one fixed step of 1/step_hz seconds. */
 pg_result pg_world_step(pg_world *world);
 
-/* Detail of the last failing call on this world (empty when none). */
+/** Detail of the last failing call on this world (empty when none). */
 const char *pg_world_last_error(const pg_world *world);
 
+/** Set the gravity (m/s^2, each component within +-1000). */
 pg_result pg_world_set_gravity(pg_world *world, pg_vec2 gravity);
+/** The gravity in force. */
 pg_vec2 pg_world_gravity(const pg_world *world);
+/** Turn effects on and off (PG_EFFECT_* bits). */
 pg_result pg_world_set_effects(pg_world *world, uint32_t effects);
+/** The PG_EFFECT_* bits in force. */
 uint32_t pg_world_effects(const pg_world *world);
-uint64_t pg_world_frame(const pg_world *world);   /* steps taken */
-pg_world_def pg_world_get_def(const pg_world *world); /* settings in force */
+uint64_t pg_world_frame(const pg_world *world);   /**< steps taken */
+pg_world_def pg_world_get_def(const pg_world *world); /**< settings in force */
 
+/** Counts of a world's objects, and of what it clamped or dropped. */
 typedef struct pg_world_stats {
-    uint32_t body_count, awake_body_count, shape_count;
-    uint32_t contact_count, touching_contact_count, pair_count;
-    uint32_t speed_clamps;     /* velocities clamped to max_linear_speed, all time */
-    uint32_t capacity_misses;  /* contacts dropped because max_contacts was reached, all time */
+    uint32_t body_count;             /**< bodies */
+    uint32_t awake_body_count;       /**< bodies awake */
+    uint32_t shape_count;            /**< shapes */
+    uint32_t contact_count;          /**< contacts, touching or within the speculative distance */
+    uint32_t touching_contact_count; /**< contacts whose shapes touch */
+    uint32_t pair_count;             /**< pairs the broadphase found in the last step */
+    uint32_t speed_clamps;     /**< velocities clamped to max_linear_speed, all time */
+    uint32_t capacity_misses;  /**< contacts dropped because max_contacts was reached, all time */
 } pg_world_stats;
+/** The world's counts now. */
 pg_world_stats pg_world_get_stats(const pg_world *world);
 
 /* ---- bodies ----------------------------------------------------------------------------- */
-typedef enum pg_body_type { PG_BODY_STATIC = 0, PG_BODY_KINEMATIC = 1, PG_BODY_DYNAMIC = 2 } pg_body_type;
+/** How a body moves. */
+typedef enum pg_body_type {
+    PG_BODY_STATIC = 0,    /**< never moves; infinite mass */
+    PG_BODY_KINEMATIC = 1, /**< moves at its set velocity; pushes, is not pushed */
+    PG_BODY_DYNAMIC = 2    /**< moved by gravity, forces and contacts */
+} pg_body_type;
 
+/** A body's initial state. Start from pg_default_body_def() and change the fields you
+ * need: a def that did not come from it is refused. */
 typedef struct pg_body_def {
-    pg_body_type type;          /* default static */
-    pg_vec2 position;           /* body origin, m */
-    pg_angle angle;             /* binary angle */
-    pg_vec2 linear_velocity;    /* m/s */
-    pg_fix angular_velocity;    /* rad/s */
-    pg_fix linear_damping;      /* 1/s, default 0 */
-    pg_fix angular_damping;     /* 1/s, default 0 */
-    pg_fix gravity_scale;       /* default 1 */
-    int fixed_rotation;         /* nonzero: never rotates */
-    int allow_sleep;            /* default 1 */
-    int awake;                  /* default 1 */
-    uint64_t user_data;         /* yours; saved in snapshots */
+    pg_body_type type;          /**< default static */
+    pg_vec2 position;           /**< body origin, m */
+    pg_angle angle;             /**< binary angle */
+    pg_vec2 linear_velocity;    /**< m/s */
+    pg_fix angular_velocity;    /**< rad/s */
+    pg_fix linear_damping;      /**< 1/s, default 0 */
+    pg_fix angular_damping;     /**< 1/s, default 0 */
+    pg_fix gravity_scale;       /**< default 1 */
+    int fixed_rotation;         /**< nonzero: never rotates */
+    int allow_sleep;            /**< default 1 */
+    int awake;                  /**< default 1 */
+    uint32_t pg__cookie;        /**< internal: set by pg_default_body_def(), which every def
+                                   must start from; a def without it is refused */
+    uint64_t user_data;         /**< yours; saved in snapshots */
 } pg_body_def;
 
+/** The default body def (see each field): every body def starts from here. */
 pg_body_def pg_default_body_def(void);
+/** Create a body without shapes (add them with pg_shape_create()). */
 pg_result pg_body_create(pg_world *world, const pg_body_def *def, pg_body_id *out);
-/* Destroys the body, its shapes and its contacts (end events are reported). */
+/** Destroys the body, its shapes and its contacts (end events are reported). */
 pg_result pg_body_destroy(pg_world *world, pg_body_id body);
+/** Nonzero when the handle names a body of this world. */
 int pg_body_is_valid(const pg_world *world, pg_body_id body);
 
-/* Getters return zero values for an invalid handle. */
+/** Getters return zero values for an invalid handle. */
 pg_body_type pg_body_type_of(const pg_world *world, pg_body_id body);
-pg_vec2 pg_body_position(const pg_world *world, pg_body_id body);        /* origin */
-pg_vec2 pg_body_world_center(const pg_world *world, pg_body_id body);    /* centre of mass */
-pg_angle pg_body_angle(const pg_world *world, pg_body_id body);
-pg_vec2 pg_body_linear_velocity(const pg_world *world, pg_body_id body);
-pg_fix pg_body_angular_velocity(const pg_world *world, pg_body_id body);
-int64_t pg_body_mass(const pg_world *world, pg_body_id body);             /* Q32.32 kg */
-int64_t pg_body_inertia(const pg_world *world, pg_body_id body);          /* Q28.36 kg m^2 */
-int pg_body_is_awake(const pg_world *world, pg_body_id body);
-uint64_t pg_body_user_data(const pg_world *world, pg_body_id body);
-/* Up to `capacity` shape handles of the body; returns the body's shape count. */
+pg_vec2 pg_body_position(const pg_world *world, pg_body_id body);        /**< origin */
+pg_vec2 pg_body_world_center(const pg_world *world, pg_body_id body);    /**< centre of mass */
+pg_angle pg_body_angle(const pg_world *world, pg_body_id body);                  /**< binary angle */
+pg_vec2 pg_body_linear_velocity(const pg_world *world, pg_body_id body);        /**< m/s, of the centre of mass */
+pg_fix pg_body_angular_velocity(const pg_world *world, pg_body_id body);        /**< rad/s */
+int64_t pg_body_mass(const pg_world *world, pg_body_id body);             /**< Q32.32 kg */
+int64_t pg_body_inertia(const pg_world *world, pg_body_id body);          /**< Q28.36 kg m^2 */
+int pg_body_is_awake(const pg_world *world, pg_body_id body);                   /**< nonzero: awake */
+uint64_t pg_body_user_data(const pg_world *world, pg_body_id body);             /**< as set */
+/** Up to `capacity` shape handles of the body; returns the body's shape count. */
 uint32_t pg_body_shapes(const pg_world *world, pg_body_id body, pg_shape_id *out, uint32_t capacity);
 
+/** Move the body's origin to `position` and turn it to `angle` (within the envelope). */
 pg_result pg_body_set_transform(pg_world *world, pg_body_id body, pg_vec2 position, pg_angle angle);
+/** Set the linear velocity (m/s); static bodies refuse. */
 pg_result pg_body_set_linear_velocity(pg_world *world, pg_body_id body, pg_vec2 v);
+/** Set the angular velocity (rad/s); static bodies refuse. */
 pg_result pg_body_set_angular_velocity(pg_world *world, pg_body_id body, pg_fix w);
+/** Change the body's type (to dynamic only when its shapes are within the envelope). */
 pg_result pg_body_set_type(pg_world *world, pg_body_id body, pg_body_type type);
+/** Nonzero wakes the body's island; 0 puts a dynamic body to sleep (its velocities
+ * become 0) when sleeping is on. Static bodies ignore it. */
 pg_result pg_body_set_awake(pg_world *world, pg_body_id body, int awake);
+/** Scale the gravity this body feels (-100..100; 0: none). */
 pg_result pg_body_set_gravity_scale(pg_world *world, pg_body_id body, pg_fix scale);
+/** Set linear and angular damping (1/s). */
 pg_result pg_body_set_damping(pg_world *world, pg_body_id body, pg_fix linear, pg_fix angular);
+/** Nonzero: the body never rotates. */
 pg_result pg_body_set_fixed_rotation(pg_world *world, pg_body_id body, int fixed);
+/** Store a value of yours with the body (saved in snapshots). */
 pg_result pg_body_set_user_data(pg_world *world, pg_body_id body, uint64_t user_data);
-/* Material and filter of every shape of the body. */
+/** @{ */
+/** Material and filter of every shape of the body. */
 pg_result pg_body_set_friction(pg_world *world, pg_body_id body, pg_fix friction);
 pg_result pg_body_set_restitution(pg_world *world, pg_body_id body, pg_fix restitution);
 pg_result pg_body_set_density(pg_world *world, pg_body_id body, pg_fix density);
 pg_result pg_body_set_filter(pg_world *world, pg_body_id body, uint32_t category, uint32_t mask);
+/** @} */
 
-/* Forces and torques act during the next step only. Force in N at the centre of mass or
+/** @{ */
+/** Forces and torques act during the next step only. Force in N at the centre of mass or
  * at a world point; torque in N m; impulses in N s change velocity at once. They wake
  * the body. Dynamic bodies only. */
 pg_result pg_body_apply_force(pg_world *world, pg_body_id body, pg_vec2 force);
@@ -233,98 +285,123 @@ pg_result pg_body_apply_force_at(pg_world *world, pg_body_id body, pg_vec2 force
 pg_result pg_body_apply_torque(pg_world *world, pg_body_id body, pg_fix torque);
 pg_result pg_body_apply_linear_impulse(pg_world *world, pg_body_id body, pg_vec2 impulse, pg_vec2 point);
 pg_result pg_body_apply_angular_impulse(pg_world *world, pg_body_id body, pg_fix impulse);
+/** @} */
 
 /* ---- geometry and shapes --------------------------------------------------------------- */
-#define PG_MAX_VERTICES 8
+#define PG_MAX_VERTICES 8 /**< most vertices of a polygon */
 
+/** The kind of a convex primitive. */
 typedef enum pg_shape_kind {
-    PG_SHAPE_CIRCLE = 0, PG_SHAPE_SEGMENT = 1, PG_SHAPE_CAPSULE = 2, PG_SHAPE_POLYGON = 3
+    PG_SHAPE_CIRCLE = 0,  /**< a point and a radius */
+    PG_SHAPE_SEGMENT = 1, /**< two points */
+    PG_SHAPE_CAPSULE = 2, /**< two points and a radius */
+    PG_SHAPE_POLYGON = 3  /**< 3..8 vertices, convex */
 } pg_shape_kind;
 
-/* A convex primitive in its own frame. Build one with the pg_geometry_* functions,
+/** A convex primitive in its own frame. Build one with the pg_geometry_* functions,
  * which validate it. A circle is vertices[0] + radius; a capsule or segment is
  * vertices[0..1] + radius (0 for a segment); a polygon is 3..8 vertices,
  * counter-clockwise and convex, radius 0. */
 typedef struct pg_geometry {
-    pg_shape_kind kind;
-    int32_t count;
-    pg_vec2 vertices[PG_MAX_VERTICES];
-    pg_fix radius;
+    pg_shape_kind kind;                /**< which primitive */
+    int32_t count;                     /**< vertices in use */
+    pg_vec2 vertices[PG_MAX_VERTICES]; /**< in the body's frame, m */
+    pg_fix radius;                     /**< m; 0 for segments and polygons */
 } pg_geometry;
 
+/** A circle of `radius` around `center`. */
 pg_result pg_geometry_circle(pg_vec2 center, pg_fix radius, pg_geometry *out);
+/** The segment from a to b. */
 pg_result pg_geometry_segment(pg_vec2 a, pg_vec2 b, pg_geometry *out);
+/** The capsule round the segment from a to b, of `radius`. */
 pg_result pg_geometry_capsule(pg_vec2 a, pg_vec2 b, pg_fix radius, pg_geometry *out);
-/* A box of half extents (hw, hh) centred at `center`, turned by `angle`. */
+/** A box of half extents (hw, hh) centred at `center`, turned by `angle`. */
 pg_result pg_geometry_box(pg_fix half_width, pg_fix half_height, pg_vec2 center, pg_angle angle, pg_geometry *out);
-/* Convex polygon; vertices in either winding (they are stored counter-clockwise). */
+/** Convex polygon; vertices in either winding (they are stored counter-clockwise). */
 pg_result pg_geometry_polygon(const pg_vec2 *vertices, int32_t count, pg_geometry *out);
-/* Equilateral triangle with circumradius r, centred at `center`, one vertex at `angle`
+/** Equilateral triangle with circumradius r, centred at `center`, one vertex at `angle`
  * (PG_ANGLE_QUARTER: pointing up). */
 pg_result pg_geometry_triangle(pg_vec2 center, pg_fix circumradius, pg_angle angle, pg_geometry *out);
 
+/** A shape's material and collision filter. Start from pg_default_shape_def() and change
+ * the fields you need: a def that did not come from it is refused. */
 typedef struct pg_shape_def {
-    pg_fix density;      /* kg/m^2, default 1 */
-    pg_fix friction;     /* default 0.6; mixing: sqrt(fa * fb) */
-    pg_fix restitution;  /* default 0; mixing: max(ra, rb) */
-    uint32_t category;   /* default 1 */
-    uint32_t mask;       /* default all bits; two shapes collide when each one's category
+    pg_fix density;      /**< kg/m^2, default 1 */
+    pg_fix friction;     /**< default 0.6; mixing: sqrt(fa * fb) */
+    pg_fix restitution;  /**< default 0; mixing: max(ra, rb) */
+    uint32_t category;   /**< default 1 */
+    uint32_t mask;       /**< default all bits; two shapes collide when each one's category
                             meets the other's mask */
+    uint32_t pg__cookie; /**< internal: set by pg_default_shape_def(), which every def must
+                            start from; a def without it is refused */
 } pg_shape_def;
 
+/** The default shape def (see each field): every shape def starts from here. */
 pg_shape_def pg_default_shape_def(void);
-/* Add a shape (geometry in the body's frame) and update the body's mass. */
+/** Add a shape (geometry in the body's frame) and update the body's mass. */
 pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *def, const pg_geometry *geometry, pg_shape_id *out);
+/** Remove a shape and update its body's mass. */
 pg_result pg_shape_destroy(pg_world *world, pg_shape_id shape);
+/** The body a shape belongs to (the zero handle for an invalid shape handle). */
 pg_body_id pg_shape_body(const pg_world *world, pg_shape_id shape);
-/* The geometry in the body frame; PG_ERR_STALE_HANDLE for an invalid handle. */
+/** The geometry in the body frame; PG_ERR_STALE_HANDLE for an invalid handle. */
 pg_result pg_shape_geometry(const pg_world *world, pg_shape_id shape, pg_geometry *out);
 
 /* ---- the six ready-made kinds (one call: a body and its shapes) -------------------------- */
+/** A body with one circle of `radius` at its origin. */
 pg_result pg_make_ball(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix radius, pg_body_id *out);
-/* A rectangle of `length` between the two cap centres with a circle of `radius` at each end. */
+/** A rectangle of `length` between the two cap centres with a circle of `radius` at each end. */
 pg_result pg_make_capsule(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix length, pg_fix radius, pg_body_id *out);
+/** A box of `width` by `height` centred at the body's origin. */
 pg_result pg_make_box(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix width, pg_fix height, pg_body_id *out);
-/* Equilateral, circumradius r, pointing up at angle 0. */
+/** Equilateral, circumradius r, pointing up at angle 0. */
 pg_result pg_make_triangle(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix circumradius, pg_body_id *out);
-/* Six-pointed star: two equilateral triangles of circumradius r; area r^2 sqrt(3). */
+/** Six-pointed star: two equilateral triangles of circumradius r; area r^2 sqrt(3). */
 pg_result pg_make_star(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix circumradius, pg_body_id *out);
-/* A static box (bd->type is ignored). */
+/** A static box (bd->type is ignored). */
 pg_result pg_make_wall(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix width, pg_fix height, pg_body_id *out);
 
 /* ---- queries ------------------------------------------------------------------------------ */
-/* Each writes up to `capacity` distinct bodies in ascending index order and stores in
+/** @{ */
+/** Each writes up to `capacity` distinct bodies in ascending index order and stores in
  * *count how many there are in all (so *count > capacity means the list was cut). */
 pg_result pg_world_query_point(const pg_world *world, pg_vec2 point, pg_body_id *out, uint32_t capacity, uint32_t *count);
 pg_result pg_world_query_aabb(const pg_world *world, pg_aabb box, pg_body_id *out, uint32_t capacity, uint32_t *count);
-/* Bodies whose shapes overlap `geometry` placed at (position, angle). */
+/** @} */
+/** Bodies whose shapes overlap `geometry` placed at (position, angle). */
 pg_result pg_world_query_geometry(const pg_world *world, const pg_geometry *geometry, pg_vec2 position, pg_angle angle,
                                   pg_body_id *out, uint32_t capacity, uint32_t *count);
-/* The free position nearest to `position` (within max_distance) where `geometry` at
+/** The free position nearest to `position` (within max_distance) where `geometry` at
  * `angle` overlaps nothing: searched on rings of growing radius, step `resolution`.
  * PG_ERR_NOT_FOUND when there is none. The caller decides whether to refuse or move. */
 pg_result pg_world_find_free_position(const pg_world *world, const pg_geometry *geometry, pg_vec2 position, pg_angle angle,
                                       pg_fix max_distance, pg_fix resolution, pg_vec2 *out);
 
+/** Where a ray hit a shape. */
 typedef struct pg_ray_hit {
-    pg_body_id body;
-    pg_shape_id shape;
-    pg_vec2 point;
-    pg_vec2 normal;     /* unit, Q16.16 */
-    pg_fix fraction;    /* along the translation, 0..1 */
+    pg_body_id body;    /**< the body hit */
+    pg_shape_id shape;  /**< the shape hit */
+    pg_vec2 point;      /**< the point hit, world frame */
+    pg_vec2 normal;     /**< unit, Q16.16 */
+    pg_fix fraction;    /**< along the translation, 0..1 */
 } pg_ray_hit;
-/* Closest hit along origin .. origin + translation; PG_ERR_NOT_FOUND when none. */
+/** Closest hit along origin .. origin + translation; PG_ERR_NOT_FOUND when none. */
 pg_result pg_world_raycast(const pg_world *world, pg_vec2 origin, pg_vec2 translation, pg_ray_hit *hit);
 
 /* ---- events (valid until the next step) -------------------------------------------------- */
+/** Two shapes that began or ended touching. */
 typedef struct pg_contact_event {
-    pg_shape_id shape_a, shape_b;
-    pg_body_id body_a, body_b;
+    pg_shape_id shape_a; /**< one shape of the pair */
+    pg_shape_id shape_b; /**< the other shape */
+    pg_body_id body_a;   /**< shape_a's body */
+    pg_body_id body_b;   /**< shape_b's body */
 } pg_contact_event;
-/* Pairs that started or stopped touching during the last step (or by a body's
+/** @{ */
+/** Pairs that started or stopped touching during the last step (or by a body's
  * destruction since it). */
 const pg_contact_event *pg_world_begin_events(const pg_world *world, uint32_t *count);
 const pg_contact_event *pg_world_end_events(const pg_world *world, uint32_t *count);
+/** @} */
 
 #ifdef __cplusplus
 }

@@ -1,4 +1,5 @@
-/* pogon/replay_file.h — replay files: a scene and the commands of every frame, with
+/** @file
+ * pogon/replay_file.h — replay files: a scene and the commands of every frame, with
  * state-hash checkpoints, in a versioned little-endian binary format.
  *
  * A replay file proves a run: it holds the initial scene (scene-file text, see
@@ -41,125 +42,135 @@
 extern "C" {
 #endif
 
-#define PG_REPLAY_MAGIC "PGREPLAY"          /* 8 bytes, no terminator in the file */
-#define PG_REPLAY_FORMAT_VERSION 1u
-#define PG_REPLAY_HEADER_SIZE 40u           /* fixed header, hash included */
-#define PG_REPLAY_TRAILER_SIZE 29u          /* the end record: tag, frames, final hash, block hash, checksum */
-#define PG_REPLAY_MAX_SECTIONS 16u          /* section hashes a checkpoint may carry */
-#define PG_REPLAY_MAX_FRAME_COMMANDS 65535u /* commands in one frame (u16 count) */
+#define PG_REPLAY_MAGIC "PGREPLAY"          /**< 8 bytes, no terminator in the file */
+#define PG_REPLAY_FORMAT_VERSION 1u         /**< the format version this build writes and reads */
+#define PG_REPLAY_HEADER_SIZE 40u           /**< fixed header, hash included */
+#define PG_REPLAY_TRAILER_SIZE 29u          /**< the end record: tag, frames, final hash, block hash, checksum */
+#define PG_REPLAY_MAX_SECTIONS 16u          /**< section hashes a checkpoint may carry */
+#define PG_REPLAY_MAX_FRAME_COMMANDS 65535u /**< commands in one frame (u16 count) */
 
-/* Record tags (one byte before each record). */
-#define PG_REPLAY_TAG_FRAME 0x46u      /* 'F' */
-#define PG_REPLAY_TAG_CHECKPOINT 0x43u /* 'C' */
-#define PG_REPLAY_TAG_END 0x45u        /* 'E' */
+/** Record tags (one byte before each record). */
+#define PG_REPLAY_TAG_FRAME 0x46u      /**< 'F' */
+#define PG_REPLAY_TAG_CHECKPOINT 0x43u /**< 'C' */
+#define PG_REPLAY_TAG_END 0x45u        /**< 'E' */
 
 /* ---- errors ------------------------------------------------------------------------- */
+/** Where and why a replay file was refused. */
 typedef struct pg_replay_error {
-    size_t offset;       /* byte offset in the file where the problem is */
-    const char *region;  /* "header", "scene", "frame", "checkpoint", "end", "file" (static) */
-    const char *field;   /* the field, e.g. "format_version", "command_count", "kind" (static) */
-    int64_t frame;       /* frame record the field belongs to, or -1 */
-    int64_t command;     /* command index within that frame, or -1 */
-    char message[200];   /* what is wrong, with the values involved */
+    size_t offset;       /**< byte offset in the file where the problem is */
+    const char *region;  /**< "header", "scene", "frame", "checkpoint", "end", "file" (static) */
+    const char *field;   /**< the field, e.g. "format_version", "command_count", "kind" (static) */
+    int64_t frame;       /**< frame record the field belongs to, or -1 */
+    int64_t command;     /**< command index within that frame, or -1 */
+    char message[200];   /**< what is wrong, with the values involved */
 } pg_replay_error;
 
 /* ---- what a valid file holds --------------------------------------------------------- */
+/** What a valid replay file holds (pg_replay_read()). */
 typedef struct pg_replay_info {
-    size_t size;                    /* file size */
-    uint32_t format_version;
-    uint32_t engine_major, engine_minor, engine_patch; /* POGON_VERSION_* of the recorder */
-    uint32_t flags;                 /* 0 in format version 1 */
-    uint32_t checkpoint_interval;   /* N: a checkpoint at frames 0, N, 2N, ... */
-    uint32_t section_count;         /* section hashes per checkpoint (PG_SECTION_COUNT when written) */
-    const char *scene_text;         /* points into the file; not NUL-terminated */
-    size_t scene_size;
-    size_t scene_offset;            /* file offset of the scene text */
-    size_t records_offset;          /* file offset of checkpoint 0 */
-    size_t end_offset;              /* file offset of the end record */
-    uint32_t frame_count;
-    uint32_t checkpoint_count;      /* frame_count / N + 1 */
-    uint64_t command_count;
-    uint64_t kind_counts[PG_CMD_KIND_COUNT]; /* commands per pg_command_kind */
-    uint32_t max_frame_commands;    /* most commands in one frame */
-    uint64_t final_hash;
-    uint64_t checksum;
+    size_t size;                    /**< file size */
+    uint32_t format_version;        /**< PG_REPLAY_FORMAT_VERSION of the writer */
+    uint32_t engine_major;          /**< POGON_VERSION_MAJOR of the recorder */
+    uint32_t engine_minor;          /**< POGON_VERSION_MINOR of the recorder */
+    uint32_t engine_patch;          /**< POGON_VERSION_PATCH of the recorder */
+    uint32_t flags;                 /**< 0 in format version 1 */
+    uint32_t checkpoint_interval;   /**< N: a checkpoint at frames 0, N, 2N, ... */
+    uint32_t section_count;         /**< section hashes per checkpoint (PG_SECTION_COUNT when written) */
+    const char *scene_text;         /**< points into the file; not NUL-terminated */
+    size_t scene_size;              /**< bytes of scene text */
+    size_t scene_offset;            /**< file offset of the scene text */
+    size_t records_offset;          /**< file offset of checkpoint 0 */
+    size_t end_offset;              /**< file offset of the end record */
+    uint32_t frame_count;           /**< frame records (steps) */
+    uint32_t checkpoint_count;      /**< frame_count / N + 1 */
+    uint64_t command_count;         /**< commands in all frames */
+    uint64_t kind_counts[PG_CMD_KIND_COUNT]; /**< commands per pg_command_kind */
+    uint32_t max_frame_commands;    /**< most commands in one frame */
+    uint64_t final_hash;            /**< pg_world_hash() after the last frame */
+    uint64_t checksum;              /**< the whole file's checksum, as stored */
 } pg_replay_info;
 
-/* Validate a whole replay file. PG_OK fills *info; otherwise PG_ERR_INVALID_ARGUMENT
+/** Validate a whole replay file. PG_OK fills *info; otherwise PG_ERR_INVALID_ARGUMENT
  * (PG_ERR_NULL for NULL pointers) and *error (may be NULL) describes the first problem.
  * The scene text is checked with pg_scene_read_def. */
 pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error);
 
-/* A checkpoint of a valid file, by index 0 .. checkpoint_count-1 (frame = index * N).
+/** A checkpoint of a valid file, by index 0 .. checkpoint_count-1 (frame = index * N).
  * sections receives min(section_count, PG_SECTION_COUNT) hashes; the rest are zeroed. */
 pg_result pg_replay_checkpoint(const uint8_t *data, const pg_replay_info *info, uint32_t index,
                                uint64_t *hash, uint64_t sections[PG_SECTION_COUNT]);
 
 /* ---- writer ------------------------------------------------------------------------- */
+/** A replay file being written into caller memory (pg_replay_writer_begin()). */
 typedef struct pg_replay_writer {
-    uint8_t *buffer;
-    size_t capacity, size;
-    size_t block_start;             /* start of the bytes the next block hash covers */
-    uint32_t checkpoint_interval;
-    uint32_t frame_count;           /* frame records written */
-    uint32_t checkpoint_count;      /* checkpoints written */
-    int finished;
+    uint8_t *buffer;                /**< the caller's buffer */
+    size_t capacity;                /**< its size */
+    size_t size;                    /**< bytes written so far */
+    size_t block_start;             /**< start of the bytes the next block hash covers */
+    uint32_t checkpoint_interval;   /**< N: a checkpoint every N frames */
+    uint32_t frame_count;           /**< frame records written */
+    uint32_t checkpoint_count;      /**< checkpoints written */
+    int finished;                   /**< 1 after pg_replay_writer_finish() */
 } pg_replay_writer;
 
-/* Start a file in `buffer`: header and scene. checkpoint_interval >= 1. The next call
+/** Start a file in `buffer`: header and scene. checkpoint_interval >= 1. The next call
  * must add checkpoint 0 (the state after loading the scene). */
 pg_result pg_replay_writer_begin(pg_replay_writer *w, uint8_t *buffer, size_t capacity, const char *scene_text,
                                  size_t scene_size, uint32_t checkpoint_interval);
-/* Move to a larger buffer that already holds the w->size bytes written so far. */
+/** Move to a larger buffer that already holds the w->size bytes written so far. */
 pg_result pg_replay_writer_set_buffer(pg_replay_writer *w, uint8_t *buffer, size_t capacity);
-/* 1 when the next call must be a checkpoint (frame count a multiple of N, not yet checkpointed). */
+/** 1 when the next call must be a checkpoint (frame count a multiple of N, not yet checkpointed). */
 int pg_replay_writer_checkpoint_due(const pg_replay_writer *w);
-/* The commands applied before the next step (count <= PG_REPLAY_MAX_FRAME_COMMANDS; 0 is fine).
+/** The commands applied before the next step (count <= PG_REPLAY_MAX_FRAME_COMMANDS; 0 is fine).
  * PG_ERR_INVALID_ARGUMENT when a checkpoint is due or a command does not encode. */
 pg_result pg_replay_writer_add_frame(pg_replay_writer *w, const pg_command *commands, uint32_t count);
-/* The checkpoint that is due: the whole-state hash and PG_SECTION_COUNT section hashes. */
+/** The checkpoint that is due: the whole-state hash and PG_SECTION_COUNT section hashes. */
 pg_result pg_replay_writer_add_checkpoint(pg_replay_writer *w, uint64_t hash, const uint64_t sections[PG_SECTION_COUNT]);
+/** The checkpoint that is due, with the hashes of `world` as it is now. */
 pg_result pg_replay_writer_add_checkpoint_world(pg_replay_writer *w, const pg_world *world);
-/* The end record and the checksums; *size (may be NULL) receives the file size. */
+/** The end record and the checksums; *size (may be NULL) receives the file size. */
 pg_result pg_replay_writer_finish(pg_replay_writer *w, uint64_t final_hash, size_t *size);
 
 /* ---- player ------------------------------------------------------------------------- */
-/* Bytes of world memory the file's scene needs (pg_world_memory_size of its def). */
+/** Bytes of world memory the file's scene needs (pg_world_memory_size of its def). */
 pg_result pg_replay_world_memory_size(const pg_replay_info *info, size_t *size, pg_replay_error *error);
 
+/** A replay file being played (pg_replay_player_begin()). */
 typedef struct pg_replay_player {
-    const uint8_t *data;
-    pg_replay_info info;
-    pg_world *world;
-    size_t cursor;                 /* file offset of the next record */
-    uint32_t frame;                /* frames stepped */
-    uint32_t checkpoints_checked;
-    uint32_t command_failures;     /* commands whose call failed (as they did when recorded) */
+    const uint8_t *data;           /**< the file */
+    pg_replay_info info;           /**< what pg_replay_read() found in it */
+    pg_world *world;               /**< the world it plays into */
+    size_t cursor;                 /**< file offset of the next record */
+    uint32_t frame;                /**< frames stepped */
+    uint32_t checkpoints_checked;  /**< checkpoints compared so far */
+    uint32_t command_failures;     /**< commands whose call failed (as they did when recorded) */
 } pg_replay_player;
 
-/* What one pg_replay_player_step did. */
+/** What one pg_replay_player_step did. */
 typedef struct pg_replay_frame_result {
-    uint32_t frame;               /* the frame record played (the world is now at frame + 1) */
-    size_t record_offset;         /* its offset in the file (for pg_replay_apply_frame) */
-    uint32_t command_count, command_failures;
-    int checkpoint;               /* 1 when a checkpoint fell on frame + 1 and was compared */
-    uint32_t checkpoint_index;
-    int match;                    /* 1 when checkpoint is 0 or the checkpoint matched */
-    uint64_t expected_hash, actual_hash;
-    uint32_t section_mismatch;    /* bit s set: section s differs (sections of this build) */
+    uint32_t frame;               /**< the frame record played (the world is now at frame + 1) */
+    size_t record_offset;         /**< its offset in the file (for pg_replay_apply_frame) */
+    uint32_t command_count;       /**< commands in the frame */
+    uint32_t command_failures;    /**< of them, those whose call failed */
+    int checkpoint;               /**< 1 when a checkpoint fell on frame + 1 and was compared */
+    uint32_t checkpoint_index;    /**< which checkpoint, when checkpoint is 1 */
+    int match;                    /**< 1 when checkpoint is 0 or the checkpoint matched */
+    uint64_t expected_hash;       /**< the checkpoint's hash in the file */
+    uint64_t actual_hash;         /**< the world's hash now */
+    uint32_t section_mismatch;    /**< bit s set: section s differs (sections of this build) */
 } pg_replay_frame_result;
 
-/* Load the scene of a file validated by pg_replay_read into a new world in `memory`
+/** Load the scene of a file validated by pg_replay_read into a new world in `memory`
  * (aligned to 8) and compare checkpoint 0 (*first, may be NULL, reports it; a mismatch
  * is not an error). Scene errors give PG_ERR_INVALID_ARGUMENT and *error. */
 pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const pg_replay_info *info, void *memory,
                                  size_t memory_size, pg_replay_frame_result *first, pg_replay_error *error);
-/* 1 when every frame has been played. */
+/** 1 when every frame has been played. */
 int pg_replay_player_done(const pg_replay_player *p);
-/* Apply the next frame's commands, step, compare the checkpoint that falls on the new
+/** Apply the next frame's commands, step, compare the checkpoint that falls on the new
  * frame. PG_ERR_INVALID_ARGUMENT when done. */
 pg_result pg_replay_player_step(pg_replay_player *p, pg_replay_frame_result *out);
-/* Apply the commands of the frame record at `record_offset` (from a frame result) to any
+/** Apply the commands of the frame record at `record_offset` (from a frame result) to any
  * world: for re-simulation after a snapshot restore. Does not step. *applied and
  * *failures (each may be NULL) count the commands applied and those that failed (a
  * failing command changes nothing, as in pg_command_queue_apply_due); both are 0 when
@@ -170,7 +181,7 @@ pg_result pg_replay_player_step(pg_replay_player *p, pg_replay_frame_result *out
 pg_result pg_replay_apply_frame(pg_world *world, const uint8_t *data, const pg_replay_info *info, size_t record_offset,
                                 uint32_t *applied, uint32_t *failures);
 
-/* Compare a world with checkpoint `index`: returns 1 when the whole hash matches;
+/** Compare a world with checkpoint `index`: returns 1 when the whole hash matches;
  * *section_mismatch (may be NULL) gets a bit per differing section. */
 int pg_replay_compare_checkpoint(const pg_world *world, const uint8_t *data, const pg_replay_info *info, uint32_t index,
                                  uint64_t *expected, uint64_t *actual, uint32_t *section_mismatch);

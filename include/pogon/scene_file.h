@@ -1,4 +1,5 @@
-/* pogon/scene_file.h — worlds as text: read and write pogon scene files.
+/** @file
+ * pogon/scene_file.h — worlds as text: read and write pogon scene files.
  *
  * WHAT IT IS
  *   A scene file describes a world in a small line-oriented text format (specified in
@@ -62,19 +63,20 @@
 extern "C" {
 #endif
 
-/* The first line of every scene file of this version. */
+/** The first line of every scene file of this version. */
 #define PG_SCENE_MAGIC "pogon-scene"
-#define PG_SCENE_VERSION 1
+#define PG_SCENE_VERSION 1 /**< the format version this build reads and writes */
 
-/* Where and why reading failed. line and column count from 1 (0: no position, e.g. a
+/** Where and why reading failed. line and column count from 1 (0: no position, e.g. a
  * NULL argument); column counts bytes. message is NUL-terminated, starts with
  * "line L, column C: " when there is a position, and is cut to fit. */
 typedef struct pg_scene_error {
-    uint32_t line, column;
-    char message[160];
+    uint32_t line;      /**< line of the problem, from 1 (0: no position) */
+    uint32_t column;    /**< byte column of the problem, from 1 (0: no position) */
+    char message[160];  /**< what is wrong, NUL-terminated */
 } pg_scene_error;
 
-/* Read only the world settings from scene text, so the caller can size memory.
+/** Read only the world settings from scene text, so the caller can size memory.
  * The whole text is checked (syntax, ranges, shapes, counts, and each dynamic body's
  * mass and inertia as pg_shape_create checks them, shape by shape), so a text accepted
  * here fails in pg_scene_load only for reasons that need a world (its free capacity, a
@@ -85,7 +87,7 @@ typedef struct pg_scene_error {
  * on success. */
 pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, pg_scene_error *error);
 
-/* Create the scene's bodies in `world`, in file order (each takes the lowest free body
+/** Create the scene's bodies in `world`, in file order (each takes the lowest free body
  * slot). The world must have been created from the def pg_scene_read_def gives for
  * this text: every setting except the capacities must be equal (else
  * PG_ERR_INVALID_ARGUMENT naming the setting), and the world's free body and shape
@@ -100,7 +102,7 @@ pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, 
  * destroyed.) */
 pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_scene_error *error);
 
-/* Write the world's settings (the def in force, capacities included) and every body
+/** Write the world's settings (the def in force, capacities included) and every body
  * with its shapes in their current state: type, position (the body origin), angle,
  * velocities, damping, gravity scale, flags (fixed rotation, allow sleep, awake),
  * user data; each shape's geometry, material and filter. Bodies are written in slot
@@ -122,7 +124,7 @@ pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_sce
  * world writes nothing and returns 0. */
 size_t pg_scene_write(const pg_world *world, char *buffer, size_t capacity);
 
-/* Degrees (Q16.16) to a binary angle exactly as the reader does: round(deg * 2^32 / 360)
+/** Degrees (Q16.16) to a binary angle exactly as the reader does: round(deg * 2^32 / 360)
  * computed in 64-bit integers from the Q16.16 value (ties away from zero), modulo a
  * full turn. 90 degrees gives PG_ANGLE_QUARTER, 45 gives 0x20000000. */
 pg_angle pg_scene_angle_from_degrees(pg_fix degrees);

@@ -9,6 +9,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "pogon/pogon.h"
 #include "pg_test_world.h"
@@ -88,6 +89,55 @@ static void test_def_problem_names_the_field(void **state)
     d = d0; d.contact_hertz = 0; assert_string_equal(pg_world_def_problem(&d), "contact_hertz must be in (0, 1000]");
     d = d0; d.max_contacts = 0; assert_string_equal(pg_world_def_problem(&d), "max_contacts must be 1..2^24");
     d = d0; d.substeps = 16; assert_null(pg_world_def_problem(&d));
+}
+
+/* A def that did not start from its defaults function (here a zeroed one, whose
+ * gravity_scale 0 or capacities 0 would otherwise be taken at face value) is refused,
+ * and the message names the function to call. A def from the function with every field
+ * copied by hand into a zeroed struct is refused too: the fields are not the whole def. */
+static void test_defs_not_from_their_defaults_are_refused(void **state)
+{
+    test_world t = make_world(8, 8, 16);
+    pg_world_def wd, copy, ok = pg_default_world_def();
+    pg_body_def bd, good_bd = pg_default_body_def();
+    pg_shape_def sd, good_sd = pg_default_shape_def();
+    pg_body_id id;
+    pg_shape_id sid;
+    pg_geometry g;
+    uint64_t mem[64];
+    pg_world *w = NULL;
+    (void)state;
+    memset(&wd, 0, sizeof wd);
+    memset(&bd, 0, sizeof bd);
+    memset(&sd, 0, sizeof sd);
+
+    assert_non_null(strstr(pg_world_def_problem(&wd), "pg_default_world_def()"));
+    assert_int_equal(pg_world_memory_size(&wd), 0);
+    assert_int_equal(pg_world_create(&wd, mem, sizeof mem, &w), PG_ERR_INVALID_ARGUMENT);
+    assert_null(w);
+    memset(&copy, 0, sizeof copy);
+    copy.gravity = ok.gravity; copy.step_hz = ok.step_hz; copy.substeps = ok.substeps; copy.effects = ok.effects;
+    copy.contact_hertz = ok.contact_hertz; copy.contact_damping_ratio = ok.contact_damping_ratio;
+    copy.contact_push_max = ok.contact_push_max; copy.restitution_threshold = ok.restitution_threshold;
+    copy.max_linear_speed = ok.max_linear_speed; copy.sleep_linear_tolerance = ok.sleep_linear_tolerance;
+    copy.sleep_angular_tolerance = ok.sleep_angular_tolerance; copy.time_to_sleep = ok.time_to_sleep;
+    copy.max_bodies = ok.max_bodies; copy.max_shapes = ok.max_shapes; copy.max_contacts = ok.max_contacts;
+    assert_non_null(strstr(pg_world_def_problem(&copy), "pg_default_world_def()"));
+    assert_null(pg_world_def_problem(&ok));
+
+    assert_int_equal(pg_body_create(t.w, &bd, &id), PG_ERR_INVALID_ARGUMENT);
+    assert_non_null(strstr(pg_world_last_error(t.w), "pg_default_body_def()"));
+    assert_int_equal(pg_make_ball(t.w, &bd, &good_sd, PG_FIX_ONE, &id), PG_ERR_INVALID_ARGUMENT);
+    assert_non_null(strstr(pg_world_last_error(t.w), "pg_default_body_def()"));
+    assert_int_equal(pg_make_ball(t.w, &good_bd, &sd, PG_FIX_ONE, &id), PG_ERR_INVALID_ARGUMENT);
+    assert_non_null(strstr(pg_world_last_error(t.w), "pg_default_shape_def()"));
+    assert_int_equal(pg_world_get_stats(t.w).body_count, 0); /* nothing was made */
+
+    assert_int_equal(pg_body_create(t.w, &good_bd, &id), PG_OK);
+    assert_int_equal(pg_geometry_circle(pg_v2_zero(), PG_FIX_ONE, &g), PG_OK);
+    assert_int_equal(pg_shape_create(t.w, id, &sd, &g, &sid), PG_ERR_INVALID_ARGUMENT);
+    assert_non_null(strstr(pg_world_last_error(t.w), "pg_default_shape_def()"));
+    free_world(&t);
 }
 
 static void test_world_create_errors(void **state)
@@ -358,7 +408,10 @@ static void check_all_stale(pg_world *w, pg_body_id id)
     assert_int_equal(pg_body_apply_linear_impulse(w, id, pg_v2(PG_FIX_ONE, 0), pg_v2_zero()), PG_ERR_STALE_HANDLE);
     assert_int_equal(pg_body_apply_angular_impulse(w, id, PG_FIX_ONE), PG_ERR_STALE_HANDLE);
     assert_int_equal(pg_geometry_circle(pg_v2_zero(), PG_FIX_ONE, &g), PG_OK);
-    assert_int_equal(pg_shape_create(w, id, &(pg_shape_def){PG_FIX_ONE, 0, 0, 1, 1}, &g, &s), PG_ERR_STALE_HANDLE);
+    {
+        pg_shape_def sd = pg_default_shape_def();
+        assert_int_equal(pg_shape_create(w, id, &sd, &g, &s), PG_ERR_STALE_HANDLE);
+    }
 }
 
 static void test_stale_handles(void **state)
@@ -1314,6 +1367,7 @@ int main(void)
         cmocka_unit_test(test_result_names_and_messages),
         cmocka_unit_test(test_memory_size_of_invalid_defs),
         cmocka_unit_test(test_def_problem_names_the_field),
+        cmocka_unit_test(test_defs_not_from_their_defaults_are_refused),
         cmocka_unit_test(test_world_create_errors),
         cmocka_unit_test(test_null_pointers),
         cmocka_unit_test(test_capacity_bodies),

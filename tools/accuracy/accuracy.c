@@ -9,6 +9,13 @@
  *       time, one marker per run, the Pareto front highlighted), DIR/rain_divergence.csv
  *       and DIR/tables.md (the printed tables). --quick runs the three presets only,
  *       once each (the CTest smoke test, a few seconds).
+ *       It also writes DIR/runs.tsv: every run's figures at full precision, with the date,
+ *       the machine and the command, from which --render prints the same tables again.
+ *   pogon-accuracy --render DIR [--section TITLE]
+ *       Prints the tables of the run saved in DIR/runs.tsv (or the one under the heading
+ *       TITLE, without the heading) without running anything: the
+ *       documents' generated tables come from here (tools/docs/regions.js, CTest
+ *       docs_generated_regions), so a hand edit of a figure is caught.
  *   pogon-accuracy --worker SUBSTEPS HERTZ BITS PUSH_RAW RATE SLEEP CCD REPEAT
  *       Internal: run one setting and print its rows as tab-separated lines. The sine
  *       table size is fixed when the library is compiled, so the tool is built once per
@@ -813,15 +820,39 @@ static int run_local(const setting *s, int repeat, int ref_repeat, run_result *r
 }
 
 /* ---- workers: the builds with other sine tables ---------------------------------------------- */
-static void print_worker(const run_result *r)
+/* One run's figures as tab-separated lines at full precision: what a worker prints and
+ * what runs.tsv holds. read_run_line() reads them back. */
+static void write_run(FILE *f, const run_result *r)
 {
     int i;
     for (i = 0; i < r->nrows; ++i)
-        printf("row\t%s\t%.17g\t%.17g\t%s\t%.17g\n", r->rows[i].scene, r->rows[i].value, r->rows[i].error, r->rows[i].unit, r->rows[i].ms);
-    for (i = 0; i < r->ndiv; ++i) printf("div\t%.17g\t%.17g\n", r->div_t[i], r->div[i]);
-    printf("ref\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", r->ref_pyramid_ms, r->ref_rain_ms, r->ref_pyramid_sink,
-           r->rain_max_diff, r->ref_stop, r->ref_incline);
-    printf("done\n");
+        fprintf(f, "row\t%s\t%.17g\t%.17g\t%s\t%.17g\n", r->rows[i].scene, r->rows[i].value, r->rows[i].error, r->rows[i].unit, r->rows[i].ms);
+    for (i = 0; i < r->ndiv; ++i) fprintf(f, "div\t%.17g\t%.17g\n", r->div_t[i], r->div[i]);
+    fprintf(f, "ref\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", r->ref_pyramid_ms, r->ref_rain_ms, r->ref_pyramid_sink,
+            r->rain_max_diff, r->ref_stop, r->ref_incline);
+    fprintf(f, "done\n");
+}
+
+static void print_worker(const run_result *r) { write_run(stdout, r); }
+
+/* One line of write_run's output into res; returns 1 on the closing "done". */
+static int read_run_line(run_result *res, const char *line)
+{
+    char scene[32], unit[16];
+    double a, b, c, e, g, h;
+    if (sscanf(line, "row\t%31s\t%lf\t%lf\t%15s\t%lf", scene, &a, &b, unit, &c) == 5) add_row(res, scene, a, b, unit, c);
+    else if (sscanf(line, "div\t%lf\t%lf", &a, &b) == 2 && res->ndiv < MAX_DIV) {
+        res->div_t[res->ndiv] = a;
+        res->div[res->ndiv++] = b;
+    } else if (sscanf(line, "ref\t%lf\t%lf\t%lf\t%lf\t%lf\t%lf", &a, &b, &c, &e, &g, &h) == 6) {
+        res->ref_pyramid_ms = a;
+        res->ref_rain_ms = b;
+        res->ref_pyramid_sink = c;
+        res->rain_max_diff = e;
+        res->ref_stop = g;
+        res->ref_incline = h;
+    } else if (strncmp(line, "done", 4) == 0) return 1;
+    return 0;
 }
 
 static void self_dir(const char *argv0, char *out, size_t size)
@@ -858,22 +889,8 @@ static int run_worker(const char *dir, const setting *s, int repeat, run_result 
              s->rate, s->sleep, s->ccd, repeat);
     f = popen(cmd, "r");
     if (f == NULL) return 0;
-    while (fgets(line, sizeof line, f) != NULL) {
-        char scene[32], unit[16];
-        double a, b, c, e, g, h;
-        if (sscanf(line, "row\t%31s\t%lf\t%lf\t%15s\t%lf", scene, &a, &b, unit, &c) == 5) add_row(res, scene, a, b, unit, c);
-        else if (sscanf(line, "div\t%lf\t%lf", &a, &b) == 2 && res->ndiv < MAX_DIV) {
-            res->div_t[res->ndiv] = a;
-            res->div[res->ndiv++] = b;
-        } else if (sscanf(line, "ref\t%lf\t%lf\t%lf\t%lf\t%lf\t%lf", &a, &b, &c, &e, &g, &h) == 6) {
-            res->ref_pyramid_ms = a;
-            res->ref_rain_ms = b;
-            res->ref_pyramid_sink = c;
-            res->rain_max_diff = e;
-            res->ref_stop = g;
-            res->ref_incline = h;
-        } else if (strncmp(line, "done", 4) == 0) done = 1;
-    }
+    while (fgets(line, sizeof line, f) != NULL)
+        if (read_run_line(res, line)) done = 1;
     res->ok = pclose(f) == 0 && done;
     return res->ok;
 }
@@ -989,8 +1006,32 @@ static void fmt_err(double e, char *out, size_t size)
     else snprintf(out, size, "%.2e", e);
 }
 
+/* Where and how the figures were measured, printed under every table: "Measured DATE on
+ * MACHINE by `COMMAND`: ...". Set by the run, or read back from runs.tsv by --render. */
+typedef struct measured {
+    char date[32], machine[256], command[512];
+    int settings, repeat;
+    double seconds;
+} measured;
+static measured g_run;
+
+static void out(const char *fmt, ...);
+static void out_measured(void)
+{
+    out("Measured %s on %s by `%s`: %d settings, %d repeat(s) each, %.0f s in all; times are CPU time.\n\n", g_run.date,
+        g_run.machine, g_run.command, g_run.settings, g_run.repeat, g_run.seconds);
+}
+
 /* The output goes both to stdout and (when given) to a file. */
 static FILE *g_md;
+
+/* A table's heading, left out when --render prints one section into a document that has
+ * its own heading (g_no_heading). */
+static int g_no_heading;
+static void heading(const char *title)
+{
+    if (!g_no_heading) out("### %s\n\n", title);
+}
 static void out(const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 1, 2)))
@@ -1012,7 +1053,8 @@ static void out(const char *fmt, ...)
 static void print_all(const run_result *all, int n, const run_result *base)
 {
     int i, j;
-    out("### Every run\n\nErrors against the ground truth of each scene (units in docs/accuracy.md); ms/step of the "
+    heading("Every run");
+    out("Errors against the ground truth of each scene (units in docs/accuracy.md); ms/step of the "
         "pyramid (210 boxes, sleeping off) and rain 500; score = geometric mean of error / the defaults' error over the "
         "scenes but rain (1 = as accurate as the defaults, lower is better).\n\n");
     out("| setting |");
@@ -1037,6 +1079,7 @@ static void print_all(const run_result *all, int n, const run_result *base)
         out(" %.3f | %.3f | %.2f |\n", p ? p->ms : 0, r ? r->ms : 0, score(&all[i], base));
     }
     out("\n");
+    out_measured();
 }
 
 static void print_presets(const run_result *all, int n)
@@ -1048,7 +1091,7 @@ static void print_presets(const run_result *all, int n)
     typedef char unit_per_scene[(int)(sizeof UNIT / sizeof UNIT[0]) == N_SCENES ? 1 : -1]; /* one unit a scene */
     (void)sizeof(unit_per_scene);
     for (i = 0; i < np; ++i) r[i] = find_result(all, n, &p[i].s);
-    out("### Presets\n\n");
+    heading("Presets");
     for (i = 0; i < np; ++i) out("- **%s**: %s\n", p[i].name, p[i].why);
     out("\n| scene | unit | fast error | fast ms/step | balanced error | balanced ms/step | accurate error | accurate ms/step |\n");
     out("|---|---|---:|---:|---:|---:|---:|---:|\n");
@@ -1069,6 +1112,7 @@ static void print_presets(const run_result *all, int n)
         else out(" n/a | |");
     }
     out("\n\n(The score row's time is the pyramid + rain 500 + stack ms/step.)\n\n");
+    out_measured();
 }
 
 static void print_fixed_cost(const run_result *b)
@@ -1077,7 +1121,7 @@ static void print_fixed_cost(const run_result *b)
     const pg_angle angle = 357913941u;
     const double th = (double)angle * (2.0 * PI / 4294967296.0), a_exact = 10.0 * (sin(th) - 0.25 * cos(th));
     if (p == NULL || r == NULL || f == NULL || i == NULL) return;
-    out("### What fixed point costs (the defaults, sleeping off)\n\n");
+    heading("What fixed point costs (the defaults, sleeping off)");
     out("The same scene stepped by pogon (Q16.16, 12-bit sine table) and by the double-precision reference of the same "
         "algorithm (tools/accuracy/ref), in the same run.\n\n");
     out("| scene | pogon ms/step | double ms/step | pogon / double | pogon result | double result | difference |\n");
@@ -1089,6 +1133,7 @@ static void print_fixed_cost(const run_result *b)
     out("| friction stop (exact 2.5 m) | | | | %.4f m | %.4f m | %.2e m |\n", f->value, b->ref_stop, fabs(f->value - b->ref_stop));
     out("| incline (exact %.4f m/s^2) | | | | %.4f m/s^2 | %.4f m/s^2 | %.2e m/s^2 |\n\n", a_exact, i->value, b->ref_incline,
         fabs(i->value - b->ref_incline));
+    out_measured();
 }
 
 static void print_divergence(const run_result *all, int n)
@@ -1097,7 +1142,8 @@ static void print_divergence(const run_result *all, int n)
     int np = presets(p), i, k;
     const run_result *r0 = find_result(all, n, &p[1].s);
     if (r0 == NULL || r0->ndiv == 0) return;
-    out("### Rain 500: divergence from the reference over time\n\nMean |position(pogon) - position(double)| over the 500 "
+    heading("Rain 500: divergence from the reference over time");
+    out("Mean |position(pogon) - position(double)| over the 500 "
         "circles (m), each preset against the reference run with the same setting.\n\n| preset |");
     for (k = 0; k < r0->ndiv; ++k) out(" t = %.2f s |", r0->div_t[k]);
     out("\n|---|");
@@ -1111,6 +1157,34 @@ static void print_divergence(const run_result *all, int n)
         out("\n");
     }
     out("\n");
+    out_measured();
+}
+
+/* Every table, in the order tables.md holds them. */
+/* One table by its heading, without the heading (--render DIR --section TITLE). */
+static int print_section(const char *title, const run_result *all, int n, const run_result *base)
+{
+    g_no_heading = 1;
+    if (strcmp(title, "Presets") == 0) print_presets(all, n);
+    else if (strcmp(title, "What fixed point costs (the defaults, sleeping off)") == 0 && base != NULL) print_fixed_cost(base);
+    else if (strcmp(title, "Rain 500: divergence from the reference over time") == 0) print_divergence(all, n);
+    else if (strcmp(title, "Every run") == 0) print_all(all, n, base);
+    else {
+        fprintf(stderr, "pogon-accuracy: no section \"%s\" (Presets; What fixed point costs (the defaults, sleeping off); "
+                        "Rain 500: divergence from the reference over time; Every run)\n", title);
+        return 0;
+    }
+    return 1;
+}
+
+static void print_tables(const run_result *all, int n, const run_result *base)
+{
+    out("## pogon accuracy against time\n\n");
+    out_measured();
+    print_presets(all, n);
+    if (base != NULL) print_fixed_cost(base);
+    print_divergence(all, n);
+    print_all(all, n, base);
 }
 
 /* ---- files ------------------------------------------------------------------------------------- */
@@ -1167,6 +1241,132 @@ static int write_csv(const char *dir, const run_result *all, int n)
         for (j = 0; j < all[i].ndiv; ++j) fprintf(g, "%s,%.4f,%.6g\n", label, all[i].div_t[j], all[i].div[j]);
     }
     return fclose(g) == 0;
+}
+
+static int parse_int(const char *t, int *v);
+
+/* runs.tsv: a "measured" line (date, machine, command, settings, repeats, seconds), then
+ * per setting a "setting" line and write_run's lines. Tabs separate the fields, so the
+ * machine and the command may hold spaces but no tab. */
+static int write_runs(const char *dir, const run_result *all, int n)
+{
+    FILE *f = open_out(dir, "runs.tsv");
+    int i;
+    if (f == NULL) return 0;
+    fprintf(f, "measured\t%s\t%s\t%s\t%d\t%d\t%.0f\n", g_run.date, g_run.machine, g_run.command, g_run.settings, g_run.repeat,
+            g_run.seconds);
+    for (i = 0; i < n; ++i) {
+        const setting *s = &all[i].s;
+        if (!all[i].ok) continue;
+        fprintf(f, "setting\t%d\t%d\t%d\t%ld\t%d\t%d\t%d\n", s->substeps, s->hertz, s->bits, (long)s->push, s->rate, s->sleep,
+                s->ccd);
+        write_run(f, &all[i]);
+    }
+    return fclose(f) == 0;
+}
+
+/* Copies the tab-separated field number `k` (0 = the line's tag) of `line` into out. */
+static int tsv_field(const char *line, int k, char *out, size_t size)
+{
+    const char *p = line, *end;
+    size_t len;
+    while (k-- > 0) {
+        p = strchr(p, '\t');
+        if (p == NULL) return 0;
+        ++p;
+    }
+    end = p + strcspn(p, "\t\r\n");
+    len = (size_t)(end - p);
+    if (len >= size) return 0;
+    memcpy(out, p, len);
+    out[len] = '\0';
+    return 1;
+}
+
+/* Reads DIR/runs.tsv into all[] and g_run; returns the number of runs, or -1 with a message
+ * naming the file and line. */
+static int read_runs(const char *dir, run_result *all, int cap)
+{
+    char path[4400], line[1024];
+    FILE *f;
+    int n = 0, lineno = 0, have_measured = 0, open_run = 0;
+    snprintf(path, sizeof path, "%s/runs.tsv", dir);
+    f = fopen(path, "r");
+    if (f == NULL) {
+        fprintf(stderr, "pogon-accuracy: cannot read %s: %s (write it with --out %s)\n", path, strerror(errno), dir);
+        return -1;
+    }
+    while (fgets(line, sizeof line, f) != NULL) {
+        ++lineno;
+        if (strncmp(line, "measured\t", 9) == 0) {
+            char a[32], b[32], c[32];
+            if (!tsv_field(line, 1, g_run.date, sizeof g_run.date) || !tsv_field(line, 2, g_run.machine, sizeof g_run.machine) ||
+                !tsv_field(line, 3, g_run.command, sizeof g_run.command) || !tsv_field(line, 4, a, sizeof a) ||
+                !tsv_field(line, 5, b, sizeof b) || !tsv_field(line, 6, c, sizeof c) || !parse_int(a, &g_run.settings) ||
+                !parse_int(b, &g_run.repeat)) {
+                fprintf(stderr, "pogon-accuracy: %s:%d: malformed measured line\n", path, lineno);
+                fclose(f);
+                return -1;
+            }
+            g_run.seconds = strtod(c, NULL);
+            have_measured = 1;
+        } else if (strncmp(line, "setting\t", 8) == 0) {
+            long push;
+            setting s;
+            if (n >= cap || open_run ||
+                sscanf(line, "setting\t%d\t%d\t%d\t%ld\t%d\t%d\t%d", &s.substeps, &s.hertz, &s.bits, &push, &s.rate, &s.sleep,
+                       &s.ccd) != 7) {
+                fprintf(stderr, "pogon-accuracy: %s:%d: malformed or unexpected setting line\n", path, lineno);
+                fclose(f);
+                return -1;
+            }
+            s.push = (pg_fix)push;
+            memset(&all[n], 0, sizeof all[n]);
+            all[n].s = s;
+            open_run = 1;
+        } else if (open_run) {
+            if (read_run_line(&all[n], line)) {
+                all[n++].ok = 1;
+                open_run = 0;
+            }
+        } else {
+            fprintf(stderr, "pogon-accuracy: %s:%d: a line outside any setting\n", path, lineno);
+            fclose(f);
+            return -1;
+        }
+    }
+    fclose(f);
+    if (!have_measured || open_run || n == 0) {
+        fprintf(stderr, "pogon-accuracy: %s: %s\n", path,
+                !have_measured ? "no measured line" : open_run ? "the last run has no done line" : "no runs");
+        return -1;
+    }
+    return n;
+}
+
+static void describe_machine(char *out, size_t size)
+{
+    char model[160] = "unknown CPU", line[512];
+    double load = -1;
+    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    if (f != NULL) {
+        while (fgets(line, sizeof line, f) != NULL) {
+            if (strncmp(line, "model name", 10) == 0 && strchr(line, ':') != NULL) {
+                snprintf(model, sizeof model, "%s", strchr(line, ':') + 2);
+                model[strcspn(model, "\r\n\t")] = '\0';
+                break;
+            }
+        }
+        fclose(f);
+    }
+    f = fopen("/proc/loadavg", "r");
+    if (f != NULL) {
+        if (fscanf(f, "%lf", &load) != 1) load = -1;
+        fclose(f);
+    }
+    if (load >= 0) snprintf(out, size, "%s, %ld CPUs, load %.1f at the start", model, cpus, load);
+    else snprintf(out, size, "%s, %ld CPUs", model, cpus);
 }
 
 /* ---- the chart --------------------------------------------------------------------------------- */
@@ -1370,6 +1570,7 @@ static int parse_int(const char *t, int *v)
 static void usage(void)
 {
     fprintf(stderr, "usage: pogon-accuracy [--out DIR] [--quick] [--repeat N]\n"
+                    "       pogon-accuracy --render DIR [--section TITLE]\n"
                     "       pogon-accuracy --worker SUBSTEPS HERTZ BITS PUSH_RAW RATE SLEEP CCD REPEAT\n");
 }
 
@@ -1406,6 +1607,41 @@ int main(int argc, char **argv)
         print_worker(&r);
         return 0;
     }
+    if (argc >= 2 && strcmp(argv[1], "--render") == 0) {
+        char title[256] = "";
+        if (argc < 3 || (argc > 3 && (strcmp(argv[3], "--section") != 0 || argc < 5))) { usage(); return 2; }
+        for (i = 4; i < argc; ++i) { /* the title's words, as a document's marker splits them */
+            size_t len = strlen(title);
+            snprintf(title + len, sizeof title - len, "%s%s", i > 4 ? " " : "", argv[i]);
+        }
+        n = read_runs(argv[2], all, MAX_SETTINGS);
+        if (n < 0) return 1;
+        {
+            setting b = balanced_setting();
+            base = find_result(all, n, &b);
+        }
+        if (argc > 3) return print_section(title, all, n, base) ? 0 : 2;
+        print_tables(all, n, base);
+        return base != NULL ? 0 : 1;
+    }
+    {
+        /* the command as run, with the program's own name: "pogon-accuracy --out DIR ..." */
+        const char *name = strrchr(argv[0], '/');
+        size_t len;
+        snprintf(g_run.command, sizeof g_run.command, "%s", name != NULL ? name + 1 : argv[0]);
+        for (i = 1; i < argc; ++i) {
+            len = strlen(g_run.command);
+            snprintf(g_run.command + len, sizeof g_run.command - len, " %s", argv[i]);
+        }
+        g_run.command[strcspn(g_run.command, "\t\r\n")] = '\0';
+    }
+    {
+        time_t now = time(NULL);
+        struct tm tm;
+        if (gmtime_r(&now, &tm) == NULL || strftime(g_run.date, sizeof g_run.date, "%Y-%m-%d %H:%M UTC", &tm) == 0)
+            snprintf(g_run.date, sizeof g_run.date, "unknown date");
+    }
+    describe_machine(g_run.machine, sizeof g_run.machine);
     for (i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--out") == 0 && i + 1 < argc) outdir = argv[++i];
         else if (strcmp(argv[i], "--quick") == 0) quick = 1;
@@ -1447,16 +1683,15 @@ int main(int argc, char **argv)
             return 1;
         }
     }
-    out("## pogon accuracy against time\n\n%d settings, %d repeat(s) each; %.0f s in all.\n\n", n, repeat, (wall_ms() - t_start) / 1000.0);
-    print_presets(all, n);
-    if (base != NULL) print_fixed_cost(base);
-    print_divergence(all, n);
-    print_all(all, n, base);
+    g_run.settings = n;
+    g_run.repeat = repeat;
+    g_run.seconds = (wall_ms() - t_start) / 1000.0;
+    print_tables(all, n, base);
     if (g_md != NULL && fclose(g_md) != 0) ++failures;
     g_md = NULL;
     if (outdir != NULL) {
-        if (!write_csv(outdir, all, n) || !write_svg(outdir, all, n, base)) ++failures;
-        else fprintf(stderr, "pogon-accuracy: wrote %s/results.csv, rain_divergence.csv, pareto.svg, tables.md\n", outdir);
+        if (!write_csv(outdir, all, n) || !write_svg(outdir, all, n, base) || !write_runs(outdir, all, n)) ++failures;
+        else fprintf(stderr, "pogon-accuracy: wrote %s/results.csv, rain_divergence.csv, runs.tsv, pareto.svg, tables.md\n", outdir);
     }
     return failures == 0 && base != NULL ? 0 : 1;
 }
