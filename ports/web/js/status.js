@@ -1,0 +1,120 @@
+// status.js — what the page shows of the app's state, refreshed each display frame:
+// the numbers (bodies, ms per step, frame, state hash, gravity), the active tool and
+// the panels it uses, the effect switches, the run button, the selected body, the
+// message, and the playback panel. Reads only; never calls into the app's input.
+import { showSelectedDefaults } from './controls.js';
+
+const $ = (id) => document.getElementById(id);
+const fmt = (v, digits = 2) => (Math.abs(v) < 0.5 * 10 ** -digits ? 0 : v).toFixed(digits);
+
+const TOOL_HINTS = [
+  'Click a body to select it; drag it; W A S D / arrows push, Q E spin.',
+  'Click a body to remove it.',
+  'Click to place a ball.',
+  'Click to place a capsule.',
+  'Click to place a box.',
+  'Click three times: the triangle\'s corners.',
+  'Click to place a star.',
+  'Click twice: the wall\'s two ends.',
+];
+
+function setText(id, text) {
+  const el = $(id);
+  if (el.textContent !== text) el.textContent = text;
+}
+
+export class Status {
+  constructor(engine, loop, notes) {
+    this.engine = engine;
+    this.loop = loop;
+    this.notes = notes;
+    this.lastSerial = -1;
+    this.lastSelected = '';
+    this.lastTool = -1;
+  }
+
+  update() {
+    const { engine } = this;
+    const ms = this.loop.msPerStep();
+    setText('stat-bodies', String(engine.bodyCount()));
+    setText('stat-awake', String(engine.awakeCount()));
+    setText('stat-ms', ms === null ? '–' : ms.toFixed(3));
+    setText('effects-ms', ms === null ? '–' : ms.toFixed(3));
+    setText('stat-frame', String(engine.frameNumber()));
+    setText('stat-hash', engine.stateHash());
+    const [gx, gy] = engine.gravity();
+    setText('stat-gravity', gx === 0 && gy === 0 ? 'off' : `${fmt(gx, 1)}, ${fmt(gy, 1)} m/s²`);
+    this.message();
+    this.tool();
+    this.effects();
+    this.selected();
+    this.playback();
+  }
+
+  // The app's latest message, unless the page has a newer one of its own.
+  message() {
+    const serial = this.engine.messageSerial();
+    if (serial !== this.lastSerial) {
+      this.lastSerial = serial;
+      this.notes.localMessage = null;
+    }
+    const text = this.notes.localMessage ?? this.engine.message();
+    setText('message', text);
+    $('message').classList.toggle('refused', /^(refused|error|cannot|corrupt)/i.test(text) || /offset/.test(text));
+  }
+
+  tool() {
+    const tool = this.engine.tool();
+    if (tool === this.lastTool) return;
+    this.lastTool = tool;
+    for (const b of document.querySelectorAll('#tools button[data-tool]')) {
+      b.classList.toggle('active', Number(b.dataset.tool) === tool);
+    }
+    for (const el of document.querySelectorAll('[data-for-tools]')) {
+      el.hidden = !el.dataset.forTools.split(' ').map(Number).includes(tool);
+    }
+    setText('tool-hint', TOOL_HINTS[tool] || '');
+  }
+
+  effects() {
+    const bits = this.engine.effects();
+    for (const box of document.querySelectorAll('#effects input[data-effect]')) {
+      const on = (bits & Number(box.dataset.effect)) !== 0;
+      if (box.checked !== on) box.checked = on;
+    }
+    const preset = String(this.engine.preset());
+    if ($('preset').value !== preset) $('preset').value = preset;
+    const paused = this.engine.paused();
+    setText('run', paused ? 'Start' : 'Pause');
+    setText('pb-run', paused ? 'Play' : 'Pause');
+  }
+
+  selected() {
+    const id = this.engine.selected();
+    const key = id ? `${id.index}:${id.generation}` : '';
+    if (key !== this.lastSelected) {
+      this.lastSelected = key;
+      if (id) showSelectedDefaults(this.engine);
+    }
+    if (!id) {
+      setText('sel-info', 'none: click a body with Move');
+      return;
+    }
+    const b = this.engine.body(id);
+    setText('sel-info', `#${id.index} ${b.type}, ${fmt(b.mass)} kg at (${fmt(b.center[0])}, ${fmt(b.center[1])}) m, ` +
+      `v (${fmt(b.velocity[0])}, ${fmt(b.velocity[1])}) m/s, ω ${fmt(b.angularVelocity)} rad/s`);
+  }
+
+  playback() {
+    const p = this.engine.playback();
+    $('playback').hidden = !p.active;
+    for (const id of ['tools', 'params', 'selected', 'sim', 'effects']) $(id).disabled = p.active;
+    if (!p.active) return;
+    setText('pb-frame', String(p.frame));
+    setText('pb-frames', String(p.frameCount));
+    setText('pb-checked', String(p.checked));
+    setText('pb-failed', String(p.failed));
+    setText('pb-last', p.lastMatch === 1 ? 'matches' : p.lastMatch === 0
+      ? `DIVERGED (sections 0x${p.sectionMismatch.toString(16)})` : '–');
+  }
+}
