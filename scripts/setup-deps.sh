@@ -3,7 +3,7 @@
 #
 # Usage: scripts/setup-deps.sh [--check] [GROUP...]
 #   GROUP    one or more of the groups below; default: the groups scripts/test.sh
-#            and scripts/demo.sh need (build test wasm cross)
+#            and scripts/demo.sh need (build test wasm cross web)
 #   --check  only report what is missing; exit 1 if anything is
 #
 # Idempotent: packages already installed (dpkg says "install ok installed") are left
@@ -39,6 +39,12 @@ PACKAGES=(
   "cross|gcc-s390x-linux-gnu|big-endian cross compiler (determinism_s390x: byte order)"
   "cross|libc6-dev-s390x-cross|C library headers and static libc for the s390x cross compiler"
   "cross|qemu-user|runs the static ARM and s390x programs (qemu-arm, qemu-s390x); no binfmt needed"
+  # --- web: the browser demo's end-to-end test (tests/web, label web) runs the page in
+  # headless Chromium driven by playwright-core (npm, package.json); scripts/node-deps.sh
+  # runs `npm ci`. npm itself comes with node; where node is Debian's, the npm group
+  # (not a default: it would replace a node that brings its own npm) installs it.
+  "web|chromium|headless browser for the web demo's end-to-end test and benchmark (tests/web, tools/bench/web_bench.mjs)"
+  "npm|npm|the npm client, for scripts/node-deps.sh where node does not bring its own (installed on demand by that script)"
   # --- optional groups for later work: install with e.g. scripts/setup-deps.sh peers ---
   "cortex-m|gcc-arm-none-eabi|bare-metal Cortex-M compiler"
   "cortex-m|libnewlib-arm-none-eabi|C library for the Cortex-M firmware"
@@ -47,7 +53,7 @@ PACKAGES=(
   "peers|libchipmunk-dev|Chipmunk2D 7.0.3, a float peer for the benchmarks"
   "peers|g++|C++ compiler for the Box2D harness (tools/bench/peers; matter.js comes from npm, node and emcc from the wasm group)"
 )
-DEFAULT_GROUPS=(build test wasm cross)
+DEFAULT_GROUPS=(build test wasm cross web)
 
 check_only=0
 groups=()
