@@ -86,11 +86,11 @@ pg_result pga_set_params(pga_app *app, const pga_params *params);
 pga_params pga_get_params(const pga_app *app);
 
 /* ---- input (world coordinates, metres, y up) ----------------------------------------------- */
-typedef enum pga_key {
+typedef enum pga_key_code {
     PGA_KEY_LEFT = 0, PGA_KEY_RIGHT, PGA_KEY_UP, PGA_KEY_DOWN,  /* W A S D and the arrows */
     PGA_KEY_SPIN_CCW, PGA_KEY_SPIN_CW,                          /* Q and E */
     PGA_KEY_COUNT
-} pga_key;
+} pga_key_code;
 
 /* A press: acts according to the tool (select, delete, add, collect a triangle's or a
  * wall's point). The outcome is reported in pga_message(). */
@@ -100,7 +100,7 @@ void pga_pointer_down(pga_app *app, pg_vec2 point);
 void pga_pointer_move(pga_app *app, pg_vec2 point);
 void pga_pointer_up(pga_app *app, pg_vec2 point);
 /* Held keys push (force) or spin (torque) the selected body, as commands each frame. */
-void pga_key(pga_app *app, pga_key key, int down);
+void pga_key(pga_app *app, pga_key_code key, int down);
 
 /* ---- actions ---------------------------------------------------------------------------------- */
 pg_result pga_toggle_gravity(pga_app *app);               /* a set_gravity command */
@@ -147,6 +147,50 @@ const pg_vec2 *pga_pending_points(const pga_app *app, uint32_t *count);
 /* The latest message for the user and a counter that grows with each new one. */
 const char *pga_message(const pga_app *app);
 uint32_t pga_message_serial(const pga_app *app);
+/* How the front end should show the latest message. */
+typedef enum pga_message_level {
+    PGA_MESSAGE_INFO = 0,    /* what happened ("Added a box", "Selected body 7") */
+    PGA_MESSAGE_REFUSED,     /* an action the app did not do, and why (overlap, bad parameter) */
+    PGA_MESSAGE_ERROR        /* a file or scene that could not be read, with where and why */
+} pga_message_level;
+pga_message_level pga_message_level_of(const pga_app *app);
+
+/* ---- colours --------------------------------------------------------------------------------- */
+/* A body's colour travels in its user_data, so a replay shows the same colours: bit 56
+ * (PGA_COLOR_FLAG) says bits 32..55 hold 0xRRGGBB; the low 32 bits stay the scene's tag
+ * (the demo's player is tag 1). Bodies without the flag get a colour by type and shape. */
+#define PGA_COLOR_FLAG (UINT64_C(1) << 56)
+uint64_t pga_user_data_with_color(uint64_t user_data, uint32_t color);
+uint32_t pga_body_color(const pga_app *app, pg_body_id body);   /* 0 for an invalid handle */
+
+/* ---- what an edit panel shows ------------------------------------------------------------------ */
+typedef struct pga_body_info {
+    pg_body_id body;
+    pg_body_type type;
+    pg_shape_kind kind;          /* of its first shape */
+    uint32_t shape_count;
+    pg_vec2 position;            /* body origin, m */
+    pg_fix angle;                /* radians in [-pi, pi) */
+    pg_vec2 linear_velocity;     /* m/s */
+    pg_fix angular_velocity;     /* rad/s */
+    pg_fix mass;                 /* kg (Q16.16, saturated; 0 for static and kinematic) */
+    uint32_t color;              /* 0xRRGGBB as drawn */
+    uint64_t user_data;
+    int awake;
+} pga_body_info;
+/* PG_ERR_STALE_HANDLE for a body that is not in the world shown. */
+pg_result pga_get_body_info(const pga_app *app, pg_body_id body, pga_body_info *out);
+/* Recolour the selected body (a set_user_data command keeping its tag). */
+pg_result pga_set_selected_color(pga_app *app, uint32_t color);
+
+/* ---- lists for menus --------------------------------------------------------------------------- */
+/* The PG_EFFECT_* switches in bit order: index 0 .. pga_effect_count()-1. */
+uint32_t pga_effect_count(void);
+uint32_t pga_effect_bit(uint32_t index);          /* 0 past the end */
+const char *pga_effect_name(uint32_t index);      /* "gravity", "rotation", ...; "" past the end */
+uint32_t pga_effects(const pga_app *app);         /* the switches as queued */
+const char *pga_preset_name(pga_preset preset);   /* "fast", "balanced", "accurate" */
+int pga_gravity_enabled(const pga_app *app);      /* as queued */
 
 /* ---- recording and playback ----------------------------------------------------------------- */
 /* A finished replay file of the session so far (since the last scene load or preset

@@ -1,0 +1,112 @@
+/* app_frame.c — the queue of world changes and one live frame.
+ *
+ * Input between frames only queues actions. pga_frame applies the queue in arrival
+ * order, then (when it steps) the commands of held keys and the drag, logs all of them
+ * as the frame's record, steps, and checkpoints. While paused the queue is still applied
+ * at each pga_frame so the user sees what was added; those commands wait in
+ * frame_commands and are logged with the next step. Applying them then or before the
+ * step makes no difference to the state, since nothing else happens in between. */
+#include "app_internal.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+pg_result pga__queue(pga_app *app, const pga_action *action)
+{
+    if (app->mode != PGA_MODE_LIVE) {
+        pga__say(app, PGA_MESSAGE_REFUSED, "%s", app->mode == PGA_MODE_EMPTY ? "Load a scene first" : "Stop the playback to change the world");
+        return PG_ERR_INVALID_ARGUMENT;
+    }
+    if (app->queue_count >= PGA_QUEUE_CAPACITY) {
+        pga__say(app, PGA_MESSAGE_REFUSED, "Refused: %u changes are already waiting for the next frame", PGA_QUEUE_CAPACITY);
+        return PG_ERR_CAPACITY;
+    }
+    app->queue[app->queue_count++] = *action;
+    return PG_OK;
+}
+
+pg_result pga__apply(pga_app *app, const pg_command *command, pg_body_id *made)
+{
+    pg_result r;
+    if (app->frame_command_count >= PG_REPLAY_MAX_FRAME_COMMANDS) {
+        pga__say(app, PGA_MESSAGE_REFUSED, "Refused: a frame holds at most %u changes; step first", PG_REPLAY_MAX_FRAME_COMMANDS);
+        return PG_ERR_CAPACITY;
+    }
+    if (app->frame_command_count == app->frame_command_capacity) {
+        uint32_t cap = app->frame_command_capacity ? app->frame_command_capacity * 2 : 64;
+        pg_command *grown = (pg_command *)realloc(app->frame_commands, sizeof *grown * cap);
+        if (grown == NULL) {
+            pga__say(app, PGA_MESSAGE_ERROR, "Refused: out of memory");
+            return PG_ERR_MEMORY;
+        }
+        app->frame_commands = grown;
+        app->frame_command_capacity = cap;
+    }
+    r = pg_command_apply(app->live.world, command, made);
+    /* A failing command changes nothing, so it is left out of the log. */
+    if (r == PG_OK) app->frame_commands[app->frame_command_count++] = *command;
+    return r;
+}
+
+void pga__flush_queue(pga_app *app)
+{
+    pg_body_id made = {0, 0}, none = {0, 0};
+    uint32_t i;
+    if (app->queue_count > 0) pga__recorder_before_changes(app);
+    for (i = 0; i < app->queue_count; ++i) {
+        pga_action *a = &app->queue[i];
+        pg_body_id created = {0, 0};
+        pg_result r;
+        if (a->body_is_last_made) {
+            if (made.generation == 0) continue; /* the body it belongs to was not made */
+            a->command.body = made;
+        }
+        r = pga__apply(app, &a->command, &created);
+        if (r != PG_OK) {
+            pga__say(app, PGA_MESSAGE_REFUSED, "Not done (%s): %s", pg_command_kind_name(a->command.kind),
+                     pg_world_last_error(app->live.world));
+            if (a->command.kind == PG_CMD_CREATE_BODY || a->command.kind == PG_CMD_MAKE) made = none;
+            /* a shape that could not be added leaves an empty body: remove it */
+            if (a->body_is_last_made && made.generation != 0) {
+                pg_command d = pg_command_init(PG_CMD_DESTROY_BODY);
+                d.body = made;
+                (void)pga__apply(app, &d, NULL);
+                made = none;
+            }
+            continue;
+        }
+        if (a->command.kind == PG_CMD_CREATE_BODY || a->command.kind == PG_CMD_MAKE) {
+            made = created;
+            if (a->select_made) app->selected = created;
+        } else if (a->command.kind == PG_CMD_DESTROY_BODY) {
+            if (pg_body_id_equal(a->command.body, app->selected)) app->selected = none;
+            if (pg_body_id_equal(a->command.body, app->drag_body)) app->dragging = 0;
+        }
+    }
+    app->queue_count = 0;
+}
+
+int pga_frame(pga_app *app)
+{
+    pg_result r;
+    if (app == NULL) return 0;
+    if (app->mode == PGA_MODE_PLAYBACK) return pga__playback_frame(app);
+    if (app->mode != PGA_MODE_LIVE) return 0;
+    pga__flush_queue(app);
+    if (!pg_body_is_valid(app->live.world, app->selected)) app->selected.index = app->selected.generation = 0;
+    if (app->paused && !app->step_requested) return 0;
+    app->step_requested = 0;
+    pga__control_commands(app);
+    r = pga__recorder_frame(app, app->frame_commands, app->frame_command_count);
+    app->frame_command_count = 0;
+    if (pg_world_step(app->live.world) != PG_OK) {
+        pga__say(app, PGA_MESSAGE_ERROR, "Step failed: %s", pg_world_last_error(app->live.world));
+        return 0;
+    }
+    if (r == PG_OK) r = pga__recorder_after_step(app);
+    if (r != PG_OK && app->recorder.active) {
+        app->recorder.active = 0;
+        pga__say(app, PGA_MESSAGE_ERROR, "Recording stopped: %s", pg_result_message(r));
+    }
+    return 1;
+}
