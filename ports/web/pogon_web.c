@@ -100,7 +100,7 @@ EXPORT void pgw_pointer(int phase, pg_fix x, pg_fix y)
 
 EXPORT void pgw_key(int key, int down)
 {
-    if (g_app && key >= 0 && key < PGA_KEY_COUNT) pga_key(g_app, (pga_key)key, down != 0);
+    if (g_app && key >= 0 && key < PGA_KEY_COUNT) pga_key(g_app, (pga_key_code)key, down != 0);
 }
 
 /* ---- actions ------------------------------------------------------------------------------ */
@@ -140,11 +140,9 @@ EXPORT uint32_t pgw_step_hz(void)
     const pg_world *w = world_of_app();
     return w ? pg_world_get_def(w).step_hz : 60u;
 }
-EXPORT uint32_t pgw_effects(void)
-{
-    const pg_world *w = world_of_app();
-    return w ? pg_world_effects(w) : 0u;
-}
+/* The effect switches as queued (what the next frame applies), for the checkboxes. */
+EXPORT uint32_t pgw_effects(void) { return g_app ? pga_effects(g_app) : 0u; }
+EXPORT int pgw_gravity_enabled(void) { return g_app ? pga_gravity_enabled(g_app) : 0; }
 EXPORT pg_fix pgw_gravity(int axis)
 {
     const pg_world *w = world_of_app();
@@ -182,16 +180,18 @@ EXPORT int32_t pgw_body(uint32_t index, uint32_t generation, int what)
     default: return 0;
     }
 }
-/* A body's mass in kg (Q32.32 converted for display in the properties panel). */
-EXPORT double pgw_body_mass_kg(uint32_t index, uint32_t generation)
+/* A body's mass (Q16.16 kg, 0 for static and kinematic bodies) and colour as drawn,
+ * from the app's body info: 0 mass, 1 colour. */
+EXPORT int32_t pgw_body_info(uint32_t index, uint32_t generation, int what)
 {
-    const pg_world *w = world_of_app();
+    pga_body_info info;
     pg_body_id id;
     id.index = index;
     id.generation = generation;
-    if (!w || !pg_body_is_valid(w, id)) return 0.0;
-    return (double)pg_body_mass(w, id) / 4294967296.0;
+    if (!g_app || pga_get_body_info(g_app, id, &info) != PG_OK) return 0;
+    return what == 0 ? info.mass : (int32_t)info.color;
 }
+EXPORT int pgw_set_selected_color(uint32_t color) { return g_app ? (int)pga_set_selected_color(g_app, color) : PG_ERR_NULL; }
 
 /* ---- drawing ------------------------------------------------------------------------------- */
 static uint32_t g_draw_count;
@@ -232,6 +232,8 @@ EXPORT uint32_t pgw_pending_count(void) { return g_pending_count; }
 
 EXPORT const char *pgw_message(void) { return g_app ? pga_message(g_app) : ""; }
 EXPORT uint32_t pgw_message_serial(void) { return g_app ? pga_message_serial(g_app) : 0u; }
+/* 0 info, 1 refused, 2 error (pga_message_level). */
+EXPORT int pgw_message_level(void) { return g_app ? (int)pga_message_level_of(g_app) : 0; }
 
 /* ---- recording and playback ---------------------------------------------------------------- */
 /* Pointer to the finished replay of the session (size in pgw_recording_size), or 0. */

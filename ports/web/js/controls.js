@@ -84,6 +84,12 @@ export function bindControls(engine, view, canvas, pointerState) {
     refocus(canvas, e.target);
   });
 
+  $('s-color').addEventListener('change', (e) => {
+    const r = engine.setSelectedColor(rgbToInt(e.target.value));
+    if (r !== 0) say(engine.message() || engine.resultName(r));
+    refocus(canvas, e.target);
+  });
+
   // ---- simulation ----
   $('run').addEventListener('click', (e) => { engine.setPaused(!engine.paused()); refocus(canvas, e.target); });
   $('step').addEventListener('click', (e) => {
@@ -153,8 +159,10 @@ export function bindControls(engine, view, canvas, pointerState) {
   canvas.addEventListener('pointerleave', () => { pointerState.world = null; });
 }
 
-// Selected-body sliders start from the new-body values (the app has no material reader).
-export function showSelectedDefaults(engine) {
+// Selected-body sliders start from the new-body values (the core has no material
+// getters, so the app cannot say a body's friction); the colour is the body's own.
+export function showSelected(engine, body) {
+  $('s-color').value = intToRgb(body.color);
   const p = engine.params();
   for (const name of ['density', 'friction', 'restitution']) {
     const input = $(`s-${name}`);

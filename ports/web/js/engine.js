@@ -78,6 +78,7 @@ class Engine {
   toggleGravity() { return this.m._pgw_toggle_gravity(); }
   setEffects(bits) { return this.m._pgw_set_effects(bits >>> 0); }
   effects() { return this.m._pgw_effects() >>> 0; }
+  gravityEnabled() { return this.m._pgw_gravity_enabled() !== 0; }
   gravity() { return [fromFix(this.m._pgw_gravity(0)), fromFix(this.m._pgw_gravity(1))]; }
   setPaused(paused) { this.m._pgw_set_paused(paused ? 1 : 0); }
   paused() { return this.m._pgw_paused() !== 0; }
@@ -90,6 +91,7 @@ class Engine {
     return index === 0 && generation === 0 ? null : { index, generation };
   }
   select(id) { return this.m._pgw_select(id.index, id.generation); }
+  setSelectedColor(color) { return this.m._pgw_set_selected_color(color >>> 0); }
   setSelectedMaterial(density, friction, restitution) {
     return this.m._pgw_set_selected_material(toFix(density), toFix(friction), toFix(restitution));
   }
@@ -110,7 +112,8 @@ class Engine {
       angularVelocity: fromFix(b(7)),
       type: ['static', 'kinematic', 'dynamic'][b(8)] ?? 'static',
       awake: b(9) !== 0,
-      mass: this.m._pgw_body_mass_kg(id.index, id.generation),
+      mass: fromFix(this.m._pgw_body_info(id.index, id.generation, 0)),
+      color: this.m._pgw_body_info(id.index, id.generation, 1) >>> 0,
     };
   }
   bodyAngle(id) { return ((this.m._pgw_body(id.index, id.generation, 6) >>> 0) / TURN) * 2 * Math.PI; }
@@ -155,6 +158,8 @@ class Engine {
   }
   message() { return this.text(this.m._pgw_message()); }
   messageSerial() { return this.m._pgw_message_serial() >>> 0; }
+  // 'info', 'refused' or 'error'
+  messageLevel() { return ['info', 'refused', 'error'][this.m._pgw_message_level()] ?? 'info'; }
   resultName(code) { return this.text(this.m._pgw_result_name(code)); }
 
   // ---- recording and playback ----

@@ -19,7 +19,7 @@ export class FixedStepLoop {
     this.accumulator = 0;
     this.last = null;
     this.costs = [];        // [time, steps, ms] of the ticks of the last second that stepped
-    this.frameTimes = [];   // display frame times of the last second
+    this.frameTimes = [];   // [time, ms of work] of the display frames of the last second
     this.onFrame = this.onFrame.bind(this);
   }
 
@@ -29,6 +29,7 @@ export class FixedStepLoop {
   reset() { this.accumulator = 0; }
 
   onFrame(now) {
+    const workStart = performance.now();
     const elapsed = this.last === null ? 0 : Math.min(now - this.last, MAX_CATCH_UP_MS);
     this.last = now;
     this.accumulator += elapsed * this.stepHz();
@@ -37,15 +38,15 @@ export class FixedStepLoop {
       const { steps, ms } = this.tick();
       if (steps > 0) this.costs.push([now, steps, ms]);
     }
-    this.frameTimes.push(now);
-    this.trim(now);
     this.draw();
+    this.frameTimes.push([now, performance.now() - workStart]);
+    this.trim(now);
     requestAnimationFrame(this.onFrame);
   }
 
   trim(now) {
     while (this.costs.length && now - this.costs[0][0] > STATS_WINDOW_MS) this.costs.shift();
-    while (this.frameTimes.length && now - this.frameTimes[0] > STATS_WINDOW_MS) this.frameTimes.shift();
+    while (this.frameTimes.length && now - this.frameTimes[0][0] > STATS_WINDOW_MS) this.frameTimes.shift();
   }
 
   // Mean ms per step over the last second, or null when nothing stepped.
@@ -57,4 +58,10 @@ export class FixedStepLoop {
 
   // Display frames drawn in the last second.
   framesPerSecond() { return this.frameTimes.length; }
+
+  // Mean ms of work per display frame (steps, drawing, readout) over the last second.
+  msPerFrame() {
+    if (!this.frameTimes.length) return null;
+    return this.frameTimes.reduce((sum, [, ms]) => sum + ms, 0) / this.frameTimes.length;
+  }
 }

@@ -2,7 +2,7 @@
 // the numbers (bodies, ms per step, frame, state hash, gravity), the active tool and
 // the panels it uses, the effect switches, the run button, the selected body, the
 // message, and the playback panel. Reads only; never calls into the app's input.
-import { showSelectedDefaults } from './controls.js';
+import { showSelected } from './controls.js';
 
 const $ = (id) => document.getElementById(id);
 const fmt = (v, digits = 2) => (Math.abs(v) < 0.5 * 10 ** -digits ? 0 : v).toFixed(digits);
@@ -43,7 +43,7 @@ export class Status {
     setText('stat-frame', String(engine.frameNumber()));
     setText('stat-hash', engine.stateHash());
     const [gx, gy] = engine.gravity();
-    setText('stat-gravity', gx === 0 && gy === 0 ? 'off' : `${fmt(gx, 1)}, ${fmt(gy, 1)} m/s²`);
+    setText('stat-gravity', engine.gravityEnabled() ? `${fmt(gx, 1)}, ${fmt(gy, 1)} m/s²` : 'off');
     this.message();
     this.tool();
     this.effects();
@@ -60,7 +60,8 @@ export class Status {
     }
     const text = this.notes.localMessage ?? this.engine.message();
     setText('message', text);
-    $('message').classList.toggle('refused', /^(refused|error|cannot|corrupt)/i.test(text) || /offset/.test(text));
+    const level = this.notes.localMessage ? 'error' : this.engine.messageLevel();
+    $('message').classList.toggle('refused', level !== 'info');
   }
 
   tool() {
@@ -92,15 +93,16 @@ export class Status {
   selected() {
     const id = this.engine.selected();
     const key = id ? `${id.index}:${id.generation}` : '';
-    if (key !== this.lastSelected) {
-      this.lastSelected = key;
-      if (id) showSelectedDefaults(this.engine);
-    }
     if (!id) {
+      this.lastSelected = '';
       setText('sel-info', 'none: click a body with Move');
       return;
     }
     const b = this.engine.body(id);
+    if (key !== this.lastSelected) {
+      this.lastSelected = key;
+      showSelected(this.engine, b);
+    }
     setText('sel-info', `#${id.index} ${b.type}, ${fmt(b.mass)} kg at (${fmt(b.center[0])}, ${fmt(b.center[1])}) m, ` +
       `v (${fmt(b.velocity[0])}, ${fmt(b.velocity[1])}) m/s, ω ${fmt(b.angularVelocity)} rad/s`);
   }

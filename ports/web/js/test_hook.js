@@ -33,6 +33,7 @@ export function installTestHook(engine, view, loop) {
     stepHz: () => engine.stepHz(),
     msPerStep: () => loop.msPerStep(),
     framesPerSecond: () => loop.framesPerSecond(),
+    msPerFrame: () => loop.msPerFrame(),
     pixelsPerMetre: () => view.pixelsPerMetre,
     toScreen: (x, y) => view.toScreen(x, y),   // CSS pixels of the canvas
     toWorld: (sx, sy) => view.toWorld(sx, sy),
