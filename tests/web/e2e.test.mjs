@@ -220,10 +220,14 @@ test('a wall by two clicks: static, from the first point to the second', async (
 test('an add that would overlap is refused with a message; with the switch it goes to the nearest free spot', async () => {
   await tool('Box');
   const count = await hook(() => window.pogon.bodyCount());
-  const serial = await hook(() => window.pogon.messageSerial());
+  await frames(2); // the wall's add has been applied and announced
   await clickWorld(placed.Box.center);
-  await page.waitForFunction((s) => window.pogon.messageSerial() !== s, serial);
-  assert.match(await message(), /refused/i);
+  try {
+    await page.waitForFunction(() => /^Refused/.test(window.pogon.message()));
+  } catch {
+    assert.fail(`no refusal: ${await message()}`);
+  }
+  assert.equal(await page.locator('#message').getAttribute('class'), 'refused', 'shown as a refusal');
   assert.match(await message(), /overlap/i);
   await frames(5);
   assert.equal(await hook(() => window.pogon.bodyCount()), count);
@@ -318,32 +322,38 @@ test('new bodies take the restitution slider: a bouncy ball bounces, a dead one 
 });
 
 test('Move: a click selects the body; keys push and spin it right after a button press', async () => {
-  // the ball has fallen to the ground now (gravity is back on): pushed, it rolls
+  // the ball has fallen to the ground (gravity is back on) and may be rolling: paused, a
+  // click at its centre cannot miss (a press selects at once, without a step)
+  const ballNow = async () => (await bodies()).find((b) => b.index === placed.Ball.index);
   await tool('Move');
-  await page.waitForFunction((i) => {
-    const b = window.pogon.bodies().find((x) => x.index === i);
-    return Math.hypot(...b.velocity) < 0.05;
-  }, placed.Ball.index);
-  await clickWorld((await bodies()).find((b) => b.index === placed.Ball.index).center);
+  await button('Pause').click();
+  await page.waitForFunction(() => window.pogon.paused());
+  await clickWorld((await ballNow()).center);
   await page.waitForFunction((i) => (window.pogon.selected() || {}).index === i, placed.Ball.index);
-  const selected = (await bodies()).find((b) => b.index === placed.Ball.index);
-  assert.ok(selected.flags & 1, 'drawn as selected');
-  await button('Move').click(); // the last thing used is a button: keys must still reach the app
-  const start = selected.center;
+  await page.waitForTimeout(100); // a display frame draws the selection
+  assert.ok((await ballNow()).flags & 1, 'drawn as selected');
+  assert.equal(hexColor(await pixel((await ballNow()).center)), hexColor(placed.Ball.color));
+  await button('Start').click(); // the last thing used is a button: keys must still reach the app
+  // a held key is a force of mass x 20 m/s^2 (up: 25) or a torque of inertia x 30 rad/s^2,
+  // each while the body is slower than the app's limit (6 m/s, 10 rad/s) that way
+  const before = await ballNow();
   await page.keyboard.down('d');
   await frames(30);
   await page.keyboard.up('d');
-  const pushed = (await bodies()).find((b) => b.index === placed.Ball.index);
-  assert.ok(pushed.center[0] > start[0] + 0.05, `pushed right: x ${start[0]} -> ${pushed.center[0]}`);
-  assert.ok(pushed.velocity[0] > 0, 'moving right');
+  const pushed = await ballNow();
+  assert.ok(pushed.velocity[0] > before.velocity[0] + 1 && pushed.velocity[0] > 0,
+    `D pushes right: vx ${before.velocity[0].toFixed(2)} -> ${pushed.velocity[0].toFixed(2)} m/s`);
   await page.keyboard.down('ArrowUp');
   await frames(20);
   await page.keyboard.up('ArrowUp');
-  assert.ok((await bodies()).find((b) => b.index === placed.Ball.index).velocity[1] > 0, 'arrow up pushes up');
+  const lifted = await ballNow();
+  assert.ok(lifted.velocity[1] > 0.5, `arrow up lifts it against gravity: vy ${lifted.velocity[1].toFixed(2)} m/s`);
   await page.keyboard.down('q');
   await frames(20);
   await page.keyboard.up('q');
-  assert.ok((await bodies()).find((b) => b.index === placed.Ball.index).angularVelocity > 0, 'Q spins counter-clockwise');
+  const spun = await ballNow();
+  assert.ok(spun.angularVelocity > lifted.angularVelocity + 3,
+    `Q spins it counter-clockwise: w ${lifted.angularVelocity.toFixed(2)} -> ${spun.angularVelocity.toFixed(2)} rad/s`);
 });
 
 test('pause, then Step advances exactly one frame', async () => {
@@ -465,11 +475,19 @@ test('a corrupt or truncated file shows the reader\'s error (offset and field) a
   flipped[200] ^= 0x10;
   const truncated = good.subarray(0, Math.floor(good.length / 2));
   for (const [name, buffer] of [['flipped.pgr', flipped], ['truncated.pgr', truncated]]) {
-    const serial = await hook(() => window.pogon.messageSerial());
+    const playing = await hook(() => window.pogon.playback());
     await page.locator('#replay-file').setInputFiles({ name, mimeType: 'application/octet-stream', buffer });
-    await page.waitForFunction((s) => window.pogon.messageSerial() !== s, serial);
+    try {
+      await page.waitForFunction(() => /^Replay refused: offset \d+/.test(window.pogon.message()));
+    } catch {
+      assert.fail(`${name}: ${await message()}`);
+    }
     const text = await message();
-    assert.match(text, /offset \d+/, `${name}: ${text}`);
+    assert.match(text, /offset \d+, \w+ field \w+/, `${name}: ${text}`);
+    assert.equal(await page.locator('#message').getAttribute('class'), 'refused', 'shown as an error');
+    // nothing changed: the replay that was playing is still the one shown
+    const still = await hook(() => window.pogon.playback());
+    assert.equal(still.frameCount, playing.frameCount);
   }
   // still working: back to live, the frame advances and a click adds a body
   if ((await hook(() => window.pogon.playback())).active) await button('Back to live').click();
