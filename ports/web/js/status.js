@@ -31,6 +31,8 @@ export class Status {
     this.lastSerial = -1;
     this.lastSelected = '';
     this.lastTool = -1;
+    this.hashFrame = -1;
+    this.hashTime = -Infinity;
   }
 
   update() {
@@ -41,7 +43,14 @@ export class Status {
     setText('stat-ms', ms === null ? '–' : ms.toFixed(3));
     setText('effects-ms', ms === null ? '–' : ms.toFixed(3));
     setText('stat-frame', String(engine.frameNumber()));
-    setText('stat-hash', engine.stateHash());
+    // the hash costs a pass over the whole state: refreshed when the frame moved, 5 times a second
+    const now = performance.now();
+    const frame = engine.frameNumber();
+    if (frame !== this.hashFrame && now - this.hashTime >= 200) {
+      this.hashFrame = frame;
+      this.hashTime = now;
+      setText('stat-hash', engine.stateHash());
+    }
     const [gx, gy] = engine.gravity();
     setText('stat-gravity', engine.gravityEnabled() ? `${fmt(gx, 1)}, ${fmt(gy, 1)} m/s²` : 'off');
     this.message();
