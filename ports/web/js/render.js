@@ -39,33 +39,56 @@ export class Renderer {
     ctx.fillStyle = BACKGROUND;
     ctx.fillRect(0, 0, view.width, view.height);
     const px = view.pixelsPerMetre;
-    // the selected body last, so its outline is on top
-    const order = shapes.filter((s) => !(s.flags & DRAW.SELECTED)).concat(shapes.filter((s) => s.flags & DRAW.SELECTED));
-    for (const s of order) {
-      this.path(s, px);
-      ctx.fillStyle = hex(s.color);
-      if (s.kind !== SHAPE.SEGMENT) ctx.fill();
-      ctx.setLineDash(s.flags & DRAW.ASLEEP ? [4, 3] : []);
-      ctx.lineWidth = s.flags & DRAW.SELECTED ? 3 : 1;
-      ctx.strokeStyle = s.flags & DRAW.SELECTED ? SELECTED : s.flags & DRAW.ASLEEP ? ASLEEP : OUTLINE;
-      if (s.kind === SHAPE.SEGMENT) ctx.strokeStyle = hex(s.color);
-      ctx.stroke();
-      if (s.kind === SHAPE.CIRCLE) this.spoke(s, angleOf(s), px);
+    // Shapes of one look (colour and outline) share one path: one fill and one stroke for
+    // all of them, in list order, with the selected body last so its outline is on top.
+    const groups = new Map();
+    const selected = [];
+    for (const s of shapes) {
+      if (s.flags & DRAW.SELECTED) { selected.push(s); continue; }
+      const key = s.color * 16 + (s.flags & DRAW.ASLEEP ? 1 : 0) + (s.kind === SHAPE.SEGMENT ? 2 : 0);
+      if (!groups.has(key)) groups.set(key, []);
+      groups.get(key).push(s);
     }
+    for (const group of groups.values()) this.fillAndStroke(group, px, false);
+    if (selected.length) this.fillAndStroke(selected, px, true);
+    // the balls' spokes, all in one stroke
+    ctx.beginPath();
+    for (const s of shapes) if (s.kind === SHAPE.CIRCLE) this.spoke(s, angleOf(s), px);
     ctx.setLineDash([]);
+    ctx.lineWidth = 1;
+    ctx.strokeStyle = OUTLINE;
+    ctx.stroke();
     this.pending(pending, pointer);
   }
 
+  fillAndStroke(group, px, selected) {
+    const { ctx } = this;
+    const first = group[0];
+    ctx.beginPath();
+    for (const s of group) this.path(s, px);
+    if (first.kind !== SHAPE.SEGMENT) {
+      ctx.fillStyle = hex(first.color);
+      ctx.fill();
+    }
+    ctx.setLineDash(!selected && first.flags & DRAW.ASLEEP ? [4, 3] : []);
+    ctx.lineWidth = selected ? 3 : 1;
+    ctx.strokeStyle = selected ? SELECTED : first.kind === SHAPE.SEGMENT ? hex(first.color)
+      : first.flags & DRAW.ASLEEP ? ASLEEP : OUTLINE;
+    ctx.stroke();
+  }
+
+  // Adds the shape as a subpath of the current path.
   path(s, px) {
     const { ctx, view } = this;
-    ctx.beginPath();
     if (s.kind === SHAPE.CIRCLE) {
       const [x, y] = view.toScreen(...s.vertices[0]);
+      ctx.moveTo(x + s.radius * px, y);
       ctx.arc(x, y, s.radius * px, 0, 2 * Math.PI);
     } else if (s.kind === SHAPE.CAPSULE) {
       const [ax, ay] = view.toScreen(...s.vertices[0]);
       const [bx, by] = view.toScreen(...s.vertices[1]);
       const a = Math.atan2(by - ay, bx - ax);
+      ctx.moveTo(bx + s.radius * px * Math.cos(a - Math.PI / 2), by + s.radius * px * Math.sin(a - Math.PI / 2));
       ctx.arc(bx, by, s.radius * px, a - Math.PI / 2, a + Math.PI / 2);
       ctx.arc(ax, ay, s.radius * px, a + Math.PI / 2, a + 1.5 * Math.PI);
       ctx.closePath();
@@ -78,18 +101,15 @@ export class Renderer {
     }
   }
 
-  // A spoke from half the radius to the rim shows a ball's turning (and leaves its centre clear).
+  // A spoke from half the radius to the rim shows a ball's turning (and leaves its centre
+  // clear); added to the current path.
   spoke(s, angle, px) {
     const { ctx, view } = this;
     const [x, y] = view.toScreen(...s.vertices[0]);
     const r = s.radius * px;
     const c = Math.cos(angle), n = -Math.sin(angle);
-    ctx.beginPath();
     ctx.moveTo(x + 0.5 * r * c, y + 0.5 * r * n);
     ctx.lineTo(x + r * c, y + r * n);
-    ctx.lineWidth = 1;
-    ctx.strokeStyle = OUTLINE;
-    ctx.stroke();
   }
 
   // The clicks collected for a triangle or a wall, joined, with a line on to the pointer.
