@@ -39,4 +39,4 @@ if [ "$serve" -eq 0 ]; then
 fi
 stage "serve: http-server build/web/site"
 echo "pogon demo: open http://127.0.0.1:$port/ in a browser (Ctrl-C stops the server)"
-exec node_modules/.bin/http-server build/web/site -a 127.0.0.1 -p "$port" -c-1 --silent
+NODE_OPTIONS=--no-deprecation exec node_modules/.bin/http-server build/web/site -a 127.0.0.1 -p "$port" -c-1 --silent

@@ -22,5 +22,5 @@ done
 scripts/node-deps.sh
 scripts/build-web.sh "$build"
 mkdir -p "$build/e2e"
-exec node tests/web/e2e.test.mjs \
+exec node --no-deprecation tests/web/e2e.test.mjs \
   --site "$build/site" --replay-tool "$replay" --out "$build/e2e"
