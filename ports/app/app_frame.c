@@ -86,6 +86,31 @@ void pga__flush_queue(pga_app *app)
     app->queue_count = 0;
 }
 
+/* A body beyond +-1000 m (the envelope's positions) has left the world: it is removed by
+ * a command, so the world can always be written and loaded again as a scene (presets). */
+static void remove_escaped(pga_app *app)
+{
+    const pg_world *w = app->live.world;
+    const pg_fix limit = PG_FIX_C(1000);
+    const pg_body_id *ids;
+    uint32_t n, i, removed = 0;
+    ids = pga__list_bodies(app, w, &n);
+    for (i = 0; i < n; ++i) {
+        pg_vec2 p = pg_body_position(w, ids[i]);
+        if (p.x >= -limit && p.x <= limit && p.y >= -limit && p.y <= limit) continue;
+        {
+            pg_command c = pg_command_init(PG_CMD_DESTROY_BODY);
+            pg_body_id gone = ids[i];
+            c.body = gone;
+            if (pga__apply(app, &c, NULL) != PG_OK) continue;
+            removed++;
+            if (pg_body_id_equal(gone, app->selected)) app->selected.index = app->selected.generation = 0;
+            if (app->dragging && pg_body_id_equal(gone, app->drag_body)) app->dragging = 0;
+        }
+    }
+    if (removed > 0) pga__say(app, PGA_MESSAGE_INFO, "Removed %u bod%s that left the world (beyond +-1000 m)", removed, removed == 1 ? "y" : "ies");
+}
+
 int pga_frame(pga_app *app)
 {
     pg_result r;
@@ -96,6 +121,7 @@ int pga_frame(pga_app *app)
     if (!pg_body_is_valid(app->live.world, app->selected)) app->selected.index = app->selected.generation = 0;
     if (app->paused && !app->step_requested) return 0;
     app->step_requested = 0;
+    remove_escaped(app);
     pga__control_commands(app);
     r = pga__recorder_frame(app, app->frame_commands, app->frame_command_count);
     app->frame_command_count = 0;

@@ -123,8 +123,8 @@ pg_result pga_select(pga_app *app, pg_body_id body);
 pg_result pga_set_selected_material(pga_app *app, pg_fix density, pg_fix friction, pg_fix restitution);
 
 /* ---- time ------------------------------------------------------------------------------------- */
-/* One fixed step (1/step_hz s): apply the queued and key/drag commands, log them, step,
- * checkpoint. Does nothing while paused unless pga_step_once was called. In playback,
+/* One fixed step (1/step_hz s): apply the queued and key/drag commands (and remove bodies
+ * beyond +-1000 m), log them, step, checkpoint. Does nothing while paused unless pga_step_once was called. In playback,
  * plays the next frame of the replay instead. Returns 1 when the world stepped. */
 int pga_frame(pga_app *app);
 uint64_t pga_frame_number(const pga_app *app);
@@ -193,9 +193,10 @@ const char *pga_preset_name(pga_preset preset);   /* "fast", "balanced", "accura
 int pga_gravity_enabled(const pga_app *app);      /* as queued */
 
 /* ---- recording and playback ----------------------------------------------------------------- */
-/* A finished replay file of the session so far (since the last scene load or preset
- * change), in a buffer owned by the app, valid until the next call. Recording never
- * stops while the app is in live mode. */
+/* A finished replay file of the session so far (since the last scene load, preset
+ * change or end of playback), in a buffer owned by the app, valid until the next call.
+ * Recording never stops while the app is in live mode. The file's scene is the live
+ * world's own text, capacities raised so added bodies fit (docs/app.md). */
 pg_result pga_recording(pga_app *app, const uint8_t **data, size_t *size);
 
 /* Leave live mode and play a replay file: its scene replaces the world, and pga_frame

@@ -216,6 +216,38 @@ static void test_effects_and_material(void **state)
     pga_destroy(app);
 }
 
+/* A body that flies beyond +-1000 m is removed (by a logged command), so the world can
+ * still be written as a scene: the preset change works and the recording replays. */
+static void test_escaped_body_removed(void **state)
+{
+    pga_app *app = app_with("open", "pogon-scene 1\ngravity 0 0\nwall 4 1 position 0 -10\n"
+                                     "ball 0.5 position 0 0 linear_velocity 300 0 user_data 1\n");
+    const uint8_t *rec;
+    size_t size;
+    uint8_t *copy;
+    uint64_t hash;
+    uint32_t stepped = 0;
+    int i;
+    (void)state;
+    assert_int_equal(pga_body_count(app), 2);
+    assert_true(pg_body_is_valid(pga_world(app), pga_selected(app)));
+    for (i = 0; i < 180; ++i) stepped += (uint32_t)pga_frame(app); /* 3 s at 300 m/s: 900 m */
+    assert_int_equal(pga_body_count(app), 2);
+    for (i = 0; i < 60; ++i) stepped += (uint32_t)pga_frame(app);
+    assert_int_equal(pga_body_count(app), 1);
+    assert_non_null(strstr(pga_message(app), "left the world"));
+    assert_int_equal(pga_selected(app).generation, 0);
+    assert_int_equal(pga_recording(app, &rec, &size), PG_OK);
+    copy = (uint8_t *)malloc(size);
+    memcpy(copy, rec, size);
+    assert_int_equal(replay_all(copy, size, &hash), stepped);
+    assert_true(hash == pga_state_hash(app));
+    free(copy);
+    assert_int_equal(pga_set_preset(app, PGA_PRESET_FAST), PG_OK);
+    assert_int_equal(pga_body_count(app), 1);
+    pga_destroy(app);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -226,6 +258,7 @@ int main(void)
         cmocka_unit_test(test_drag_moves_toward_pointer),
         cmocka_unit_test(test_preset_keeps_bodies),
         cmocka_unit_test(test_effects_and_material),
+        cmocka_unit_test(test_escaped_body_removed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
