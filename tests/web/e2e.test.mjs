@@ -434,6 +434,15 @@ async function playToEnd(label) {
   return p;
 }
 
+test('the accuracy presets: fast, balanced and accurate are 2, 4 and 8 substeps', async () => {
+  // (after the download: a preset restarts the world and the recording)
+  for (const [value, name, substeps] of [['2', 'accurate', 8], ['0', 'fast', 2], ['1', 'balanced', 4]]) {
+    await page.locator('#preset').selectOption(value);
+    await page.waitForFunction((v) => window.pogon.preset() === v, Number(value));
+    assert.match(await message(), new RegExp(`^Accuracy ${name} \\(${substeps} substeps\\)`));
+  }
+});
+
 test('the page plays its own recording back and every checkpoint matches', async () => {
   await page.locator('#replay-file').setInputFiles(recordingPath);
   await playToEnd('web_session.pgr');
@@ -498,6 +507,19 @@ test('a corrupt or truncated file shows the reader\'s error (offset and field) a
   await page.waitForFunction(() => window.pogon.sceneName() === 'demo' && window.pogon.bodyCount() === 9);
   const ball = await add('Ball', [[0, 8]], '#e8590c');
   assert.equal(ball.type, 'dynamic');
+});
+
+test('the scene picker offers every file of scenes/ and loads each', async () => {
+  const files = readdirSync(join(root, 'scenes')).filter((f) => f.endsWith('.scene')).sort();
+  const offered = await page.$$eval('#scene option', (os) => os.map((o) => o.value));
+  assert.deepEqual(offered, files.map((f) => `scenes/${f}`));
+  for (const f of files) {
+    const name = f.replace(/\.scene$/, '');
+    await page.locator('#scene').selectOption(`scenes/${f}`);
+    await page.waitForFunction((n) => window.pogon.sceneName() === n, name);
+    assert.match(await message(), new RegExp(`^Loaded scene ${name}: \\d+ bodies`));
+    assert.ok((await hook(() => window.pogon.bodyCount())) > 0, name);
+  }
 });
 
 test('the screenshot for the README', async () => {

@@ -25,6 +25,7 @@ export function installTestHook(engine, view, loop) {
     paused: () => engine.paused(),
     gravity: () => engine.gravity(),
     effects: () => engine.effects(),
+    preset: () => engine.preset(),
     tool: () => engine.tool(),
     selected: () => engine.selected(),
     pending: () => engine.pendingPoints(),
