@@ -88,8 +88,9 @@ async function add(name, points, color) {
   return added[0];
 }
 
-// The canvas pixel at a world point, as 0xRRGGBB.
+// The canvas pixel at a world point, as 0xRRGGBB, once two more display frames have drawn.
 async function pixel([x, y]) {
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   return hook(([px, py]) => {
     const canvas = document.getElementById('canvas');
     const [sx, sy] = window.pogon.toScreen(px, py);
@@ -102,7 +103,18 @@ async function pixel([x, y]) {
 const hexColor = (c) => '#' + c.toString(16).padStart(6, '0');
 const BACKGROUND = 0xfbfaf7;
 
-async function message() { return (await page.locator('#message').textContent()).trim(); }
+// The message the page shows, once it shows the app's latest (the readout follows a display frame later).
+async function message() {
+  await page.waitForFunction(() => document.getElementById('message').textContent === window.pogon.message())
+    .catch(() => {});
+  return (await page.locator('#message').textContent()).trim();
+}
+
+// Choose a file in the page's "load a file" input, through the browser's file chooser.
+async function chooseReplayFile(files) {
+  const [chooser] = await Promise.all([page.waitForEvent('filechooser'), page.locator('#replay-file').click()]);
+  await chooser.setFiles(files);
+}
 
 // ---- set up --------------------------------------------------------------------------------
 before(async () => {
@@ -426,11 +438,17 @@ async function playToEnd(label) {
   await page.locator('#pb-speed').selectOption('0');
   await page.waitForFunction(() => { const p = window.pogon.playback(); return p.frame === p.frameCount; }, null,
     { timeout: 120000 });
+  // the app announces the end once it is reached
+  await page.waitForFunction(() => /^Replay finished/.test(window.pogon.message()));
+  assert.match(await message(), /^Replay finished: \d+ frames, (\d+) of \1 checkpoints matched/, label);
   const p = await hook(() => window.pogon.playback());
   assert.equal(p.failed, 0, `${label}: ${p.failed} checkpoints diverged`);
   assert.ok(p.checked >= 2, `${label}: ${p.checked} checkpoints compared`);
   assert.equal(p.lastMatch, 1, `${label}: the last checkpoint matches`);
   assert.equal(await page.locator('#pb-failed').textContent(), '0');
+  await page.waitForTimeout(50); // a display frame shows the last marks
+  const strip = await page.locator('#pb-strip').textContent();
+  assert.equal(strip, '✓'.repeat(p.checked), `${label}: one ✓ per checkpoint`);
   return p;
 }
 
@@ -444,7 +462,7 @@ test('the accuracy presets: fast, balanced and accurate are 2, 4 and 8 substeps'
 });
 
 test('the page plays its own recording back and every checkpoint matches', async () => {
-  await page.locator('#replay-file').setInputFiles(recordingPath);
+  await chooseReplayFile(recordingPath);
   await playToEnd('web_session.pgr');
 });
 
@@ -485,7 +503,7 @@ test('a corrupt or truncated file shows the reader\'s error (offset and field) a
   const truncated = good.subarray(0, Math.floor(good.length / 2));
   for (const [name, buffer] of [['flipped.pgr', flipped], ['truncated.pgr', truncated]]) {
     const playing = await hook(() => window.pogon.playback());
-    await page.locator('#replay-file').setInputFiles({ name, mimeType: 'application/octet-stream', buffer });
+    await chooseReplayFile({ name, mimeType: 'application/octet-stream', buffer });
     try {
       await page.waitForFunction(() => /^Replay refused: offset \d+/.test(window.pogon.message()));
     } catch {
@@ -513,7 +531,9 @@ test('the scene picker offers every file of scenes/ and loads each', async () =>
   const files = readdirSync(join(root, 'scenes')).filter((f) => f.endsWith('.scene')).sort();
   const offered = await page.$$eval('#scene option', (os) => os.map((o) => o.value));
   assert.deepEqual(offered, files.map((f) => `scenes/${f}`));
-  for (const f of files) {
+  // the scene shown now last, so that choosing each one is a change
+  const current = `${await hook(() => window.pogon.sceneName())}.scene`;
+  for (const f of [...files.filter((x) => x !== current), current]) {
     const name = f.replace(/\.scene$/, '');
     await page.locator('#scene').selectOption(`scenes/${f}`);
     await page.waitForFunction((n) => window.pogon.sceneName() === n, name);

@@ -116,11 +116,36 @@ export class Status {
       `v (${fmt(b.velocity[0])}, ${fmt(b.velocity[1])}) m/s, ω ${fmt(b.angularVelocity)} rad/s`);
   }
 
+  // One mark per checkpoint compared, in order. Several may be compared between two
+  // display frames (fast playback): the app counts them, and those that diverged are
+  // the latest of them, since a run that diverged stays diverged.
+  checkpointMarks(p) {
+    const strip = $('pb-strip');
+    if (!this.marks || p.checked < this.marks.checked) {
+      this.marks = { checked: 0, failed: 0 };
+      strip.textContent = '';
+    }
+    const added = p.checked - this.marks.checked;
+    const failed = Math.min(added, p.failed - this.marks.failed);
+    if (added > failed) strip.append('✓'.repeat(added - failed));
+    if (failed > 0) {
+      const bad = document.createElement('span');
+      bad.className = 'diverged';
+      bad.textContent = '✗'.repeat(failed);
+      strip.append(bad);
+    }
+    this.marks = { checked: p.checked, failed: p.failed };
+  }
+
   playback() {
     const p = this.engine.playback();
     $('playback').hidden = !p.active;
     for (const id of ['tools', 'params', 'selected', 'sim', 'effects']) $(id).disabled = p.active;
-    if (!p.active) return;
+    if (!p.active) {
+      this.marks = null;
+      return;
+    }
+    this.checkpointMarks(p);
     setText('pb-frame', String(p.frame));
     setText('pb-frames', String(p.frameCount));
     setText('pb-checked', String(p.checked));
