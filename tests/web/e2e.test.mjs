@@ -556,7 +556,7 @@ test('the screenshot for the README', async () => {
   await tool('Move');
   await frames(40);
   const path = join(opt.out, 'demo.png');
-  await page.screenshot({ path, fullPage: false });
+  await page.screenshot({ path, clip: { x: 0, y: 0, width: 1320, height: 700 } }); // the page without the empty space below
   if (opt.screenshot) {
     mkdirSync(dirname(opt.screenshot), { recursive: true });
     copyFileSync(path, opt.screenshot);
