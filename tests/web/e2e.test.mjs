@@ -17,6 +17,10 @@ import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { serveSite, openBrowser, openPage } from './browser.mjs';
+import {
+  usePage, hook, frame, bodies, dist, frames, pagePoint, clickWorld, button, tool, bodyCountIs, newBodies, add, pixel,
+  hexColor, BACKGROUND, message, shownAsRefusal, chooseReplayFile, sampleVelocities, startShipped, playToEnd,
+} from './page_driver.mjs';
 
 const { values: opt } = parseArgs({
   options: {
@@ -33,101 +37,13 @@ const PX_TOLERANCE_M = 0.08; // a click lands within a pixel (1/22 m in the demo
 let site, browser, page;
 const errors = [];
 
-// ---- helpers -------------------------------------------------------------------------
-const hook = (fn, arg) => page.evaluate(fn, arg);
-const frame = () => hook(() => window.pogon.frame());
-const bodies = () => hook(() => window.pogon.bodies());
-const dist = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1]);
-
-async function frames(n) {
-  const target = (await frame()) + n;
-  await page.waitForFunction((t) => window.pogon.frame() >= t, target, { timeout: 20000 });
-}
-
-// The page point (CSS pixels of the viewport) of a world point.
-async function pagePoint([x, y]) {
-  const [sx, sy] = await hook(([px, py]) => window.pogon.toScreen(px, py), [x, y]);
-  const box = await page.locator('#canvas').boundingBox();
-  const border = await hook(() => document.getElementById('canvas').clientLeft);
-  return [box.x + border + sx, box.y + border + sy];
-}
-
-async function clickWorld(point) {
-  const [px, py] = await pagePoint(point);
-  await page.mouse.click(px, py);
-}
-
-const button = (name) => page.getByRole('button', { name, exact: true });
-
-async function tool(name) { await button(name).click(); }
-
-// Wait until the body count is `n` (adds are applied at the start of the next frame).
-async function bodyCountIs(n) {
-  await page.waitForFunction((k) => window.pogon.bodyCount() === k, n, { timeout: 5000 });
-}
-
-// The bodies present now that were not in `before`.
-async function newBodies(beforeList) {
-  const known = new Set(beforeList.map((b) => `${b.index}:${b.generation}`));
-  return (await bodies()).filter((b) => !known.has(`${b.index}:${b.generation}`));
-}
-
-// Add by clicking `points` with tool `name` and colour `color`: the one new body.
-async function add(name, points, color) {
-  await tool(name);
-  await page.locator('#p-color').fill(color);
-  const before = await bodies();
-  for (const p of points) await clickWorld(p);
-  try {
-    await bodyCountIs(before.length + 1);
-  } catch {
-    assert.fail(`${name} at ${JSON.stringify(points)} not added: ${await message()}`);
-  }
-  const added = await newBodies(before);
-  assert.equal(added.length, 1, `${name}: one new body`);
-  return added[0];
-}
-
-// The canvas pixel at a world point, as 0xRRGGBB, once two more display frames have drawn.
-async function pixel([x, y]) {
-  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
-  return hook(([px, py]) => {
-    const canvas = document.getElementById('canvas');
-    const [sx, sy] = window.pogon.toScreen(px, py);
-    const ratio = canvas.width / canvas.clientWidth;
-    const d = canvas.getContext('2d').getImageData(Math.floor(sx * ratio), Math.floor(sy * ratio), 1, 1).data;
-    return (d[0] << 16) | (d[1] << 8) | d[2];
-  }, [x, y]);
-}
-
-const hexColor = (c) => '#' + c.toString(16).padStart(6, '0');
-const BACKGROUND = 0xfbfaf7;
-
-// The message the page shows, once it shows the app's latest (the readout follows a display frame later).
-async function message() {
-  await page.waitForFunction(() => document.getElementById('message').textContent === window.pogon.message())
-    .catch(() => {});
-  return (await page.locator('#message').textContent()).trim();
-}
-
-// Whether the page shows its message in the refusal style (a display frame after the app says it).
-async function shownAsRefusal() {
-  return page.waitForFunction(() => document.getElementById('message').classList.contains('refused'), null,
-    { timeout: 3000 }).then(() => true, () => false);
-}
-
-// Choose a file in the page's "load a file" input, through the browser's file chooser.
-async function chooseReplayFile(files) {
-  const [chooser] = await Promise.all([page.waitForEvent('filechooser'), page.locator('#replay-file').click()]);
-  await chooser.setFiles(files);
-}
-
 // ---- set up --------------------------------------------------------------------------------
 before(async () => {
   site = await serveSite(opt.site);
   browser = await openBrowser();
   page = await openPage(browser.context, site.url, errors);
   page.setDefaultTimeout(10000);
+  usePage(page);
 });
 
 after(async () => {
@@ -305,17 +221,6 @@ test('Move: drag a body with the mouse', async () => {
   assert.ok(dist(held.center, target) < 0.5, `dragged to ${held.center}, pointer at ${target}`);
 });
 
-// Sample a body every display frame for `n` frames, in the page: its vertical velocities.
-const sampleVelocities = (id, n) => page.evaluate(([index, generation, count]) => new Promise((done) => {
-  const vys = [];
-  const sample = () => {
-    const b = window.pogon.bodies().find((x) => x.index === index && x.generation === generation);
-    vys.push(b ? b.velocity[1] : 0);
-    if (vys.length < count) requestAnimationFrame(sample); else done(vys);
-  };
-  requestAnimationFrame(sample);
-}), [id.index, id.generation, n]);
-
 test('new bodies take the restitution slider: a bouncy ball bounces, a dead one does not', async () => {
   await button('Toggle gravity').click();
   await page.waitForFunction(() => window.pogon.gravity()[1] === -10);
@@ -429,38 +334,6 @@ test('the recorded session downloads and passes the native pogon-replay verify',
   const out = execFileSync(opt['replay-tool'], ['verify', recordingPath], { encoding: 'utf8' });
   assert.match(out, /: OK \d+ frames/, out);
 });
-
-// Choose a shipped replay and start it: the app says so in a new message.
-async function startShipped(file) {
-  const serial = await hook(() => window.pogon.messageSerial());
-  await page.locator('#replay-shipped').selectOption(file);
-  await button('Play selected').click();
-  await page.waitForFunction((s) => window.pogon.messageSerial() !== s && window.pogon.playback().active, serial);
-}
-
-// Play a replay already chosen in the page to its end at full speed.
-async function playToEnd(label) {
-  await page.waitForFunction(() => window.pogon.playback().active, null, { timeout: 5000 });
-  await page.locator('#pb-speed').selectOption('0');
-  await page.waitForFunction(() => { const p = window.pogon.playback(); return p.frame === p.frameCount; }, null,
-    { timeout: 120000 });
-  // the app announces the end once it is reached
-  await page.waitForFunction(() => /^Replay finished/.test(window.pogon.message()));
-  assert.match(await message(), /^Replay finished: \d+ frames, (\d+) of \1 checkpoints matched/, label);
-  const p = await hook(() => window.pogon.playback());
-  assert.equal(p.failed, 0, `${label}: ${p.failed} checkpoints diverged`);
-  assert.ok(p.checked >= 2, `${label}: ${p.checked} checkpoints compared`);
-  assert.equal(p.lastMatch, 1, `${label}: the last checkpoint matches`);
-  await page.waitForFunction((n) => document.getElementById('pb-checked').textContent === String(n), p.checked)
-    .catch(() => {});
-  assert.equal(await page.locator('#pb-failed').textContent(), '0');
-  // the readout follows a display frame later
-  await page.waitForFunction((n) => document.getElementById('pb-strip').textContent.length >= n, p.checked)
-    .catch(() => {});
-  const strip = await page.locator('#pb-strip').textContent();
-  assert.equal(strip, '✓'.repeat(p.checked), `${label}: one ✓ per checkpoint`);
-  return p;
-}
 
 test('the accuracy presets: fast, balanced and accurate are 2, 4 and 8 substeps', async () => {
   // (after the download: a preset restarts the world and the recording)
