@@ -3,7 +3,7 @@
 #
 # Usage: scripts/setup-deps.sh [--check] [GROUP...]
 #   GROUP    one or more of the groups below; default: the groups scripts/test.sh
-#            and scripts/demo.sh need (build test wasm cross desktop cortex-m)
+#            and scripts/demo.sh need (build test wasm cross web desktop cortex-m)
 #   --check  only report what is missing; exit 1 if anything is
 #
 # Idempotent: packages already installed (dpkg says "install ok installed") are left
@@ -52,12 +52,18 @@ PACKAGES=(
   "cortex-m|libnewlib-arm-none-eabi|C library (newlib-nano, librdimon for semihosting) for the Cortex-M firmware"
   "cortex-m|qemu-system-arm|runs the firmware on the mps2-an385 (Cortex-M3, M0+) and mps2-an386 (Cortex-M4) boards"
   "cortex-m|python3|runs tools/size/size_table.py (the size table and the cortex_m_flash test)"
+  # --- web: the browser demo's end-to-end test (tests/web, label web) runs the page in
+  # headless Chromium driven by playwright-core (npm, package.json); scripts/node-deps.sh
+  # runs `npm ci`. npm itself comes with node; where node is Debian's, the npm group
+  # (not a default: it would replace a node that brings its own npm) installs it.
+  "web|chromium|headless browser for the web demo's end-to-end test and benchmark (tests/web, tools/bench/web_bench.mjs)"
+  "npm|npm|the npm client, for scripts/node-deps.sh where node does not bring its own (installed on demand by that script)"
   # --- optional groups for later work: install with e.g. scripts/setup-deps.sh peers ---
   "peers|libbox2d-dev|Box2D 2.4.1, a float peer for the benchmarks"
   "peers|libchipmunk-dev|Chipmunk2D 7.0.3, a float peer for the benchmarks"
   "peers|g++|C++ compiler for the Box2D harness (tools/bench/peers; matter.js comes from npm, node and emcc from the wasm group)"
 )
-DEFAULT_GROUPS=(build test wasm cross desktop cortex-m)
+DEFAULT_GROUPS=(build test wasm cross web desktop cortex-m)
 
 check_only=0
 groups=()
