@@ -1,7 +1,21 @@
 /* body.c — the body pool, mass from shapes, getters, setters, forces and impulses. */
+#include "body.h"
+#include "contact.h"
+#include "continuous.h"
+#include "envelope.h"
+#include "error.h"
+#include "island.h"
 #include "mass.h"
 #include "wide.h"
-#include "world_internal.h"
+
+/* A handle's body, or NULL when the handle is stale or out of range. */
+pg_body *pg__body(const pg_world *world, pg_body_id id)
+{
+    pg_body *b;
+    if (world == NULL || id.index >= world->def.max_bodies || id.generation == 0) return NULL;
+    b = &world->bodies[id.index];
+    return ((b->flags & PG_BODY_FLAG_USED) != 0 && b->generation == id.generation) ? b : NULL;
+}
 
 pg_body_def pg_default_body_def(void)
 {
@@ -331,30 +345,6 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
         world->boxes[s] = box;
     }
     b->flags &= ~(uint32_t)PG_BODY_FLAG_GEOMETRY_DIRTY;
-}
-
-void pg__wake_body(pg_world *world, uint32_t body_index)
-{
-    pg_body *b = &world->bodies[body_index];
-    uint32_t island = b->island, i;
-    if (b->type == PG_BODY_STATIC) return;
-    if ((b->flags & PG_BODY_FLAG_AWAKE) != 0) {
-        b->sleep_time = 0;
-        return;
-    }
-    if (island == PG_NULL_INDEX) {
-        b->flags |= PG_BODY_FLAG_AWAKE;
-        b->sleep_time = 0;
-        return;
-    }
-    for (i = 0; i < world->body_high; ++i) {
-        pg_body *o = &world->bodies[i];
-        if ((o->flags & PG_BODY_FLAG_USED) != 0 && (o->flags & PG_BODY_FLAG_AWAKE) == 0 && o->island == island) {
-            o->flags |= PG_BODY_FLAG_AWAKE;
-            o->sleep_time = 0;
-            o->island = PG_NULL_INDEX;
-        }
-    }
 }
 
 /* ---- getters ------------------------------------------------------------------------------------ */

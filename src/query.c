@@ -14,8 +14,14 @@
  * products with Q2.30 normals stay below 2^62.5 and only their differences are
  * combined. A ray additionally has both ends within the envelope (checked), so every
  * shape it is tested against lies within a shape's size of +-1000 m. */
+#include "body.h"
+#include "collide.h"
+#include "envelope.h"
+#include "error.h"
+#include "raycast.h"
+#include "shape.h"
 #include "text.h"
-#include "world_internal.h"
+#include "world_types.h"
 
 static int boxes_overlap(pg_aabb a, pg_aabb b) { return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y; }
 

@@ -1,9 +1,24 @@
 /* shape.c — geometry validation, shapes on bodies, and the six ready-made kinds. */
+#include "body.h"
+#include "contact.h"
+#include "continuous.h"
+#include "envelope.h"
+#include "error.h"
+#include "island.h"
 #include "mass.h"
-#include "world_internal.h"
+#include "shape.h"
 
 #define MAX_OFFSET PG_FIX_C(50)       /* a shape's vertices within 50 m of its body */
 #define MIN_EDGE PG_LINEAR_SLOP       /* shorter edges are degenerate */
+
+/* A handle's shape, or NULL when the handle is stale or out of range. */
+pg_shape *pg__shape(const pg_world *world, pg_shape_id id)
+{
+    pg_shape *s;
+    if (world == NULL || id.index >= world->def.max_shapes || id.generation == 0) return NULL;
+    s = &world->shapes[id.index];
+    return (s->used && s->generation == id.generation) ? s : NULL;
+}
 
 static int offset_ok(pg_vec2 p) { return p.x >= -MAX_OFFSET && p.x <= MAX_OFFSET && p.y >= -MAX_OFFSET && p.y <= MAX_OFFSET; }
 static int size_ok(pg_fix s) { return s >= PG_ENV_MIN_SIZE && s <= PG_ENV_MAX_SIZE; }

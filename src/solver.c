@@ -175,9 +175,13 @@
  * gets no sideways push from the solver's order (the 20-box column of test_stacking
  * keeps every box at x = 0 exactly for all of its 60 s: its printed max |x|).
  */
-#include "wide.h"
+#include "body.h"
+#include "continuous.h"
+#include "envelope.h"
 #include "intmath.h"
-#include "world_internal.h"
+#include "solver.h"
+#include "wide.h"
+#include "world_types.h"
 
 /* gcc does not always inline the friction row into its two call sites; measured with
  * callgrind, forcing it saves 2-3% of a step (and forcing the larger normal row costs). */
