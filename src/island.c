@@ -126,7 +126,7 @@ void pg__update_sleep(pg_world *w)
         if (w->bodies[i].sleep_time < min_time[r]) min_time[r] = w->bodies[i].sleep_time;
     }
     /* An island still pushing out a deep overlap does not sleep: that push moves positions
-     * only (solver.c, DEEP PUSH), so its bodies look at rest while they are not. */
+     * only (docs/solver-design.md, DEEP PUSH), so its bodies look at rest while they are not. */
     for (i = 0; i < n_contacts; ++i) {
         const pg_contact *c = &w->contacts[i];
         int32_t n = c->point_count; /* 0, 1 or 2 */
