@@ -23,7 +23,7 @@
  *   The rule is symmetric in sign: f(-x) == -f(x). A bias that always pushes one way
  *   makes resting bodies creep, so pogon never truncates toward -infinity on values
  *   that can be negative. See pg__round_shift64().
- *   The one other rule: the contact solver's rows (src/solver.c, ROUNDING) round to
+ *   The one other rule: the contact solver's rows (docs/solver-design.md, ROUNDING) round to
  *   nearest with ties toward +infinity, (x + 2^(n-1)) >> n, which differs from this
  *   rule only at an exact tie of a negative value, by one unit, and costs half the
  *   operations in the step's hottest loop. Where ties are common, the angular speed

@@ -741,7 +741,7 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         }
     }
     if (c->block) {
-        /* both rows at once: the change -E^-1 b (pogon's solver.c, BLOCK) */
+        /* both rows at once: the change -E^-1 b (pogon: docs/solver-design.md, BLOCK) */
         spoint *p0 = &c->p[0], *p1 = &c->p[1];
         int soft0, soft1;
         double rel0 = rel_speed(A, B, n, p0->cnA, p0->cnB), rel1 = rel_speed(A, B, n, p1->cnA, p1->cnB);
@@ -807,7 +807,7 @@ void ref_step(ref_world *w)
     /* 2. contacts */
     update_contacts(w);
     /* 3. solve */
-    /* the softness cap of src/solver.c: neither softness stiffer than a quarter of the
+    /* the softness cap of src/contact_solver.c: neither softness stiffer than a quarter of the
      * substep rate */
     if (hertz * 4 > n_per_s) hertz = n_per_s / 4;
     ctx.n = n_per_s;
@@ -975,7 +975,7 @@ void ref_step(ref_world *w)
             if (c->restitution == 0) continue;
             if (c->block && c->p[0].relative_velocity <= -d->restitution_threshold && c->p[0].max_ln != 0 &&
                 c->p[1].relative_velocity <= -d->restitution_threshold && c->p[1].max_ln != 0) {
-                /* both points bounce: together (pogon's solver.c, BLOCK) */
+                /* both points bounce: together (pogon: docs/solver-design.md, BLOCK) */
                 spoint *p0 = &c->p[0], *p1 = &c->p[1];
                 double b0 = rel_speed(A, B, c->n, p0->cnA, p0->cnB) + c->restitution * p0->relative_velocity;
                 double b1 = rel_speed(A, B, c->n, p1->cnA, p1->cnB) + c->restitution * p1->relative_velocity;
