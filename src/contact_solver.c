@@ -9,7 +9,6 @@
  * CENTRAL FRICTION, LAZY ROWS, APPROACH, DEEP PUSH, WARM START, ORDER, ROUNDING, TWINS,
  * SYMMETRY, SOFTNESS CAP) are the sections of docs/solver-design.md that give the reasons.
  */
-#include "body.h"
 #include "contact_solver.h"
 #include "intmath.h"
 #include "wide.h"
