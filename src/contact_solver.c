@@ -1136,7 +1136,7 @@ void pg__contacts_warm_start(const pg_contact_stage *s, const step_context *ctx,
 /* The solve and relax stages copy the context and the constraint list into locals: the
  * rows' stores through the bodies could otherwise alias them, and every row would load
  * them again. */
-void pg__contacts_solve(const pg_contact_stage *s, const step_context *ctx_in, solver_body *restrict bodies)
+void pg__contacts_solve(const pg_contact_stage *s, const step_context *ctx_in, solver_body *bodies)
 {
     const step_context ctx = *ctx_in;
     constraint *cons = s->cons;
@@ -1154,7 +1154,7 @@ void pg__contacts_solve(const pg_contact_stage *s, const step_context *ctx_in, s
     }
 }
 
-void pg__contacts_relax(const pg_contact_stage *s, const step_context *ctx_in, solver_body *restrict bodies)
+void pg__contacts_relax(const pg_contact_stage *s, const step_context *ctx_in, solver_body *bodies)
 {
     const step_context ctx = *ctx_in;
     constraint *cons = s->cons;
