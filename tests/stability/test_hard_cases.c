@@ -1543,10 +1543,10 @@ static void test_edge_beyond_is_refused(void **state)
     pg_body_def bd = dynamic_at(0, 0), b2;
     pg_body_id id;
     (void)state;
-    expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(0.04), fx(0.04), &id), "0.04 m box");
-    expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(0.04), PG_FIX_ONE, &id), "0.04 x 1 m box");
+    expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(0.008), fx(0.008), &id), "0.008 m box");
+    expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(0.008), PG_FIX_ONE, &id), "0.008 x 1 m box");
     expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(100.5), PG_FIX_ONE, &id), "100.5 m box");
-    expect_refused(t.w, pg_make_ball(t.w, &bd, &sd, fx(0.02), &id), "ball of radius 0.02 m");
+    expect_refused(t.w, pg_make_ball(t.w, &bd, &sd, fx(0.004), &id), "ball of radius 0.004 m");
     s2 = sd; s2.density = PG_FIX_C(101);
     expect_refused(t.w, pg_make_box(t.w, &bd, &s2, PG_FIX_ONE, PG_FIX_ONE, &id), "density 101");
     s2.density = fx(0.09);
