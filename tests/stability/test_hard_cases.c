@@ -1289,7 +1289,7 @@ static int expect_rest(const char *label, rest_run r, double tol)
     return ok;
 }
 
-/* 0.05 m boxes (the smallest body) at both density edges: rest within 10 % of their size. */
+/* 0.05 m boxes (thinner shapes: test_envelope_shapes.c) at both density edges: rest within 10 % of their size. */
 static void test_edge_smallest_box_rests(void **state)
 {
     int ok = 1;
@@ -1300,7 +1300,7 @@ static void test_edge_smallest_box_rests(void **state)
     if (!ok) fail();
 }
 
-/* 100 m boxes (the largest body) on a 100 m ground: rest within 1 mm. (1 cm until session
+/* 100 m boxes (the largest dynamic body) on a 100 m ground: rest within 1 mm. (1 cm until session
  * 5: a box landing flat drifted 6.3 mm, its two contact points solved one after the
  * other; solved together the landing is symmetric and the drift 0. What is left of the
  * 1 mm is the soft contact's sink, 0.07 mm under a 100 m box on a static side.) */
