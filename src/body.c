@@ -6,6 +6,7 @@
 #include "error.h"
 #include "island.h"
 #include "mass.h"
+#include "reach.h"
 #include "wide.h"
 
 /* A handle's body, or NULL when the handle is stale or out of range. */
@@ -421,6 +422,12 @@ pg_result pg_body_set_type(pg_world *world, pg_body_id id, pg_body_type type)
     if (type != PG_BODY_STATIC && type != PG_BODY_KINEMATIC && type != PG_BODY_DYNAMIC)
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
     if (b->type == type) return PG_OK;
+    if (type != PG_BODY_STATIC) { /* a static body's shapes may reach farther than a moving body's */
+        uint32_t s;
+        for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next)
+            if (pg__geometry_reach(&world->shapes[s].geometry) > pg__body_reach_limit(type))
+                return pg__fail_reach(world, pg__geometry_reach(&world->shapes[s].geometry), type);
+    }
     if (type == PG_BODY_DYNAMIC) {
         const char *why;
         uint32_t s;

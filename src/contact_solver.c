@@ -586,21 +586,37 @@ PG__INLINE_ROW void normal_apply_pair(velocity *va, velocity *vb, constraint_poi
     }
 }
 
-/* The approach speed of a point that first pushes now, at relative normal speed rel:
- * the less negative of rel and what the speed would be had no contact acted since the
- * step's start (APPROACH). Out of line: it runs once per bouncing point and step. */
-PG__NOINLINE void record_approach(const step_context *ctx, constraint_point *p, int64_t rel)
+/* The approach speed of a point that first pushes now, at relative normal speed rel and
+ * separation s, in the soft pass (relax 0) or the relax pass (relax 1) of this substep:
+ * the closing speed at the instant the gap closes (APPROACH, SUBSTEP PHASE).
+ * u is the speed the gap closes at, the less negative of rel and what external forces
+ * alone would have made it: a relax pass foresees the next substep, whose velocity
+ * integration adds a h first. A substep's velocity is its mean (semi-implicit Euler
+ * drifts at the velocity after the kick), so at the instant the gap closes, tau into the
+ * substep, the speed is u + a (tau - h/2), tau = s / |u| (0 when touching, or when the
+ * relax pass of the last substep foresees a closing in the next step, which the rebound
+ * then leaves at the gap). Out of line: it runs once per bouncing point and step. */
+PG__NOINLINE void record_approach(const step_context *ctx, constraint_point *p, int64_t rel, int64_t s, int relax)
 {
-    int64_t t = ctx->h_q32 * (int64_t)(ctx->sub + 1u); /* the end of this substep, Q32 s */
-    int64_t external = (int64_t)p->approach_start + pg__mul64_shr(p->approach_accel, t, 32);
-    p->relative_velocity = pg__sat64(rel > external ? rel : external);
+    const int64_t h = ctx->h_q32, a = p->approach_accel;
+    int64_t t = h * (int64_t)(ctx->sub + 1u + (uint32_t)relax); /* the end of the closing substep, Q32 s */
+    int64_t external = (int64_t)p->approach_start + pg__mul64_shr(a, t, 32), u, tau = 0;
+    if (relax) rel += pg__mul64_shr(a, h, 32);
+    u = rel > external ? rel : external;
+    if (s > 0 && u < 0 && !(relax && ctx->sub + 1u == ctx->world->def.substeps)) {
+        /* |u| >= 1 and, below 2^38, s 2^24 / |u| < 2^62: Q24, then Q32; at most h (a gap
+         * of 2^38, 4.2 million m, closes in no substep) */
+        tau = s >= (INT64_C(1) << 38) ? h : (s << 24) / -u;
+        tau = tau >= (h >> 8) + 1 ? h : tau << 8;
+    }
+    p->relative_velocity = pg__sat64(u + pg__mul64_shr(a, tau - h / 2, 32));
 }
 
 /* The approach speed a bouncing point rebounds from (APPROACH), recorded just before it
  * first pushes in this step and kept from then on. */
-PG__INLINE_ROW void note_approach(const step_context *ctx, const constraint *c, constraint_point *p, int64_t rel)
+PG__INLINE_ROW void note_approach(const step_context *ctx, const constraint *c, constraint_point *p, int64_t rel, int64_t s, int relax)
 {
-    if (c->restitution != 0 && p->max_normal_impulse == 0) record_approach(ctx, p, rel);
+    if (c->restitution != 0 && p->max_normal_impulse == 0) record_approach(ctx, p, rel, s, relax);
 }
 
 /* One normal row at separation s with relative normal speed rel (measured from va, vb
@@ -610,7 +626,7 @@ PG__INLINE_PASS void solve_normal(const step_context *ctx, const softness *soft,
 {
     int is_soft;
     int64_t b = normal_target(ctx, soft, p, s, rel, use_bias, &is_soft);
-    note_approach(ctx, c, p, rel);
+    note_approach(ctx, c, p, rel, s, !use_bias);
     normal_apply(c, va, vb, p, normal_update(soft, p, b, is_soft));
 }
 
@@ -650,8 +666,8 @@ PG__INLINE_PASS int solve_normal_pair(const step_context *ctx, const softness *s
     acc0 = normal_update(soft, p0, y0, soft0);
     acc1 = normal_update(soft, p1, y1, soft1);
     if (acc0 < 0 || acc1 < 0) return 0;
-    note_approach(ctx, c, p0, rel0);
-    note_approach(ctx, c, p1, rel1);
+    note_approach(ctx, c, p0, rel0, s0, !use_bias);
+    note_approach(ctx, c, p1, rel1, s1, !use_bias);
     normal_apply_pair(va, vb, p0, acc0, p1, acc1, c->twin);
     return 1;
 }
@@ -873,10 +889,13 @@ PG__INLINE_PASS void warm_start(constraint *c, solver_body *bodies)
 static inline int bounces(const constraint_point *p, pg_fix threshold) { return p->relative_velocity <= -threshold && p->max_normal_impulse != 0; }
 
 /* What the rebound row drives to 0: the relative normal speed now plus e times the
- * approach speed. */
-static inline int64_t rebound_target(const constraint *c, const velocity *va, const velocity *vb, const constraint_point *p)
+ * approach speed, plus half a substep of external acceleration, a h / 2 (lag): the speed
+ * a body leaves with is the mean of its next substep less that substep's a h / 2, the
+ * same phase record_approach took the approach at (SUBSTEP PHASE). */
+static inline int64_t rebound_target(const constraint *c, const velocity *va, const velocity *vb, const constraint_point *p, int64_t lag)
 {
-    return relative_speed(va, vb, c->n, p->cnA, p->cnB) + pg_fix_mul(c->restitution, p->relative_velocity);
+    return relative_speed(va, vb, c->n, p->cnA, p->cnB) + pg_fix_mul(c->restitution, p->relative_velocity) +
+           pg__mul64_shr(p->approach_accel, lag, 32);
 }
 
 static inline void rebound_apply(velocity *va, velocity *vb, constraint_point *p, int64_t acc)
@@ -886,7 +905,8 @@ static inline void rebound_apply(velocity *va, velocity *vb, constraint_point *p
     p->normal_impulse = (pg_fix)acc;
 }
 
-static void restitution(constraint *c, solver_body *bodies, pg_fix threshold)
+/* lag: half a substep, Q32 s (rebound_target) */
+static void restitution(constraint *c, solver_body *bodies, pg_fix threshold, int64_t lag)
 {
     solver_body *A = &bodies[c->a], *B = &bodies[c->b];
     velocity va = load_velocity(A), vb = load_velocity(B);
@@ -897,7 +917,7 @@ static void restitution(constraint *c, solver_body *bodies, pg_fix threshold)
         /* both points bounce: together, as the rows were solved (BLOCK), or the first
          * point takes the whole rebound and a box landing flat leaves spinning */
         constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
-        int64_t b0 = rebound_target(c, &va, &vb, p0), b1 = rebound_target(c, &va, &vb, p1);
+        int64_t b0 = rebound_target(c, &va, &vb, p0, lag), b1 = rebound_target(c, &va, &vb, p1, lag);
         if (block_targets_fit(b0, b1)) {
             int64_t y0, y1, acc0, acc1;
             block_inverse(c, c->e01, c->e10, b0, b1, &y0, &y1);
@@ -912,7 +932,7 @@ static void restitution(constraint *c, solver_body *bodies, pg_fix threshold)
     }
     for (k = 0; !done && k < c->count; ++k) {
         constraint_point *p = &c->p[k];
-        if (bounces(p, threshold)) rebound_apply(&va, &vb, p, (int64_t)p->normal_impulse - rebound_target(c, &va, &vb, p));
+        if (bounces(p, threshold)) rebound_apply(&va, &vb, p, (int64_t)p->normal_impulse - rebound_target(c, &va, &vb, p, lag));
     }
     store_velocity(A, &va);
     store_velocity(B, &vb);
@@ -1171,7 +1191,7 @@ void pg__contacts_restitution(const pg_contact_stage *s, const step_context *ctx
 {
     uint32_t i;
     if ((ctx->effects & PG_EFFECT_RESTITUTION) == 0) return;
-    for (i = 0; i < s->count; ++i) restitution(&s->cons[i], bodies, ctx->world->def.restitution_threshold);
+    for (i = 0; i < s->count; ++i) restitution(&s->cons[i], bodies, ctx->world->def.restitution_threshold, ctx->h_q32 / 2);
 }
 
 void pg__contacts_store(const pg_contact_stage *s, pg_world *w)

@@ -32,7 +32,8 @@ void pg__contacts_warm_start(const pg_contact_stage *s, const step_context *ctx,
 void pg__contacts_solve(const pg_contact_stage *s, const step_context *ctx, solver_body *bodies);
 /* The relax pass: no bias, from the separations where the bodies are now. */
 void pg__contacts_relax(const pg_contact_stage *s, const step_context *ctx, solver_body *bodies);
-/* Once after the substeps: the rebound of points that approached fast enough. */
+/* Once after the substeps: the rebound of points that approached fast enough, in the
+ * phase of the substep the bodies leave in (half a substep of a h: SUBSTEP PHASE). */
 void pg__contacts_restitution(const pg_contact_stage *s, const step_context *ctx, solver_body *bodies);
 /* The impulses back into the contacts, for the next step's warm start. */
 void pg__contacts_store(const pg_contact_stage *s, pg_world *w);

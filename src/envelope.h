@@ -10,9 +10,18 @@
 #define PG_LINEAR_SLOP ((pg_fix)328)           /* 0.005 m */
 #define PG_SPECULATIVE_DISTANCE ((pg_fix)1311) /* 0.02 m: 4 slops */
 
-/* Envelope, Q16.16. */
-#define PG_ENV_MIN_SIZE ((pg_fix)1638)          /* 0.025 m: smallest radius / half extent */
+/* Envelope, Q16.16 (pogon.h's THE ENVELOPE and docs/envelope.md say why each holds).
+ * Thickness: every shape of every body is at least 2 PG_ENV_MIN_HALF_THICKNESS across in
+ * every direction (a circle's or capsule's radius, a polygon's narrowest width; a
+ * segment's length), 0.00998 m, so that pg_make_box(0.01 m) (half extent 327 LSB) passes.
+ * Reach: a shape's vertices lie within PG_ENV_MAX_SIZE of the origin of a dynamic or
+ * kinematic body (its lever arms, squared, must fit the solver's formats) and within
+ * PG_ENV_MAX_STATIC_REACH of a static body's origin (no mass, no lever arm: only the
+ * position envelope limits it). Radii are at most PG_ENV_MAX_SIZE on every body. */
+#define PG_ENV_MIN_HALF_THICKNESS ((pg_fix)327) /* 0.005 m, rounded down */
+#define PG_ENV_MIN_THICKNESS (2 * PG_ENV_MIN_HALF_THICKNESS)
 #define PG_ENV_MAX_SIZE PG_FIX_C(50)
+#define PG_ENV_MAX_STATIC_REACH PG_FIX_C(1000)
 #define PG_ENV_MIN_DENSITY ((pg_fix)6554)       /* 0.1 */
 #define PG_ENV_MAX_DENSITY PG_FIX_C(100)
 #define PG_ENV_MAX_POSITION PG_FIX_C(1000)

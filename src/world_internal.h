@@ -16,6 +16,7 @@
 #include "island.h"
 #include "mass.h"
 #include "raycast.h"
+#include "reach.h"
 #include "shape.h"
 #include "solver.h"
 #include "world_types.h"
