@@ -62,6 +62,7 @@ PACKAGES=(
   "peers|libbox2d-dev|Box2D 2.4.1, a float peer for the benchmarks"
   "peers|libchipmunk-dev|Chipmunk2D 7.0.3, a float peer for the benchmarks"
   "peers|g++|C++ compiler for the Box2D harness (tools/bench/peers; matter.js comes from npm, node and emcc from the wasm group)"
+  "bench|valgrind|callgrind, which counts the instructions of pogon-bench's awake steps (docs/solver-design.md, Inlining)"
 )
 DEFAULT_GROUPS=(build test wasm cross web desktop cortex-m)
 

@@ -1,7 +1,23 @@
 /* body.c — the body pool, mass from shapes, getters, setters, forces and impulses. */
+#include "body.h"
+#include "contact.h"
+#include "continuous.h"
+#include "def_cookie.h"
+#include "envelope.h"
+#include "error.h"
+#include "island.h"
 #include "mass.h"
+#include "reach.h"
 #include "wide.h"
-#include "world_internal.h"
+
+/* A handle's body, or NULL when the handle is stale or out of range. */
+pg_body *pg__body(const pg_world *world, pg_body_id id)
+{
+    pg_body *b;
+    if (world == NULL || id.index >= world->def.max_bodies || id.generation == 0) return NULL;
+    b = &world->bodies[id.index];
+    return ((b->flags & PG_BODY_FLAG_USED) != 0 && b->generation == id.generation) ? b : NULL;
+}
 
 pg_body_def pg_default_body_def(void)
 {
@@ -337,30 +353,6 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
     b->flags &= ~(uint32_t)PG_BODY_FLAG_GEOMETRY_DIRTY;
 }
 
-void pg__wake_body(pg_world *world, uint32_t body_index)
-{
-    pg_body *b = &world->bodies[body_index];
-    uint32_t island = b->island, i;
-    if (b->type == PG_BODY_STATIC) return;
-    if ((b->flags & PG_BODY_FLAG_AWAKE) != 0) {
-        b->sleep_time = 0;
-        return;
-    }
-    if (island == PG_NULL_INDEX) {
-        b->flags |= PG_BODY_FLAG_AWAKE;
-        b->sleep_time = 0;
-        return;
-    }
-    for (i = 0; i < world->body_high; ++i) {
-        pg_body *o = &world->bodies[i];
-        if ((o->flags & PG_BODY_FLAG_USED) != 0 && (o->flags & PG_BODY_FLAG_AWAKE) == 0 && o->island == island) {
-            o->flags |= PG_BODY_FLAG_AWAKE;
-            o->sleep_time = 0;
-            o->island = PG_NULL_INDEX;
-        }
-    }
-}
-
 /* ---- getters ------------------------------------------------------------------------------------ */
 pg_body_type pg_body_type_of(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->type : PG_BODY_STATIC; }
 pg_vec2 pg_body_position(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->origin : pg_v2_zero(); }
@@ -435,6 +427,12 @@ pg_result pg_body_set_type(pg_world *world, pg_body_id id, pg_body_type type)
     if (type != PG_BODY_STATIC && type != PG_BODY_KINEMATIC && type != PG_BODY_DYNAMIC)
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
     if (b->type == type) return PG_OK;
+    if (type != PG_BODY_STATIC) { /* a static body's shapes may reach farther than a moving body's */
+        uint32_t s;
+        for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next)
+            if (pg__geometry_reach(&world->shapes[s].geometry) > pg__body_reach_limit(type))
+                return pg__fail_reach(world, pg__geometry_reach(&world->shapes[s].geometry), type);
+    }
     if (type == PG_BODY_DYNAMIC) {
         const char *why;
         uint32_t s;

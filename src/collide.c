@@ -84,7 +84,7 @@
  * have distinct end points (their normals must be valid). SAT over face normals only:
  * deep overlaps of rounded shapes use the cores' face normals (as Box2D).
  */
-#include "geom.h"
+#include "collide.h"
 
 /* 0.1 * linear slop (0.005 m), Q16.16. */
 #define PG__REF_TOLERANCE ((int64_t)33)
@@ -642,4 +642,23 @@ int pg_geom_overlap(const pg_geom *a, const pg_geom *b)
     for (i = 0; i < m.count; ++i)
         if (m.points[i].separation < 0) return 1;
     return 0;
+}
+
+int pg_geom_contains(const pg_geom *g, pg_vec2 p)
+{
+    /* The same decision as pg_collide against a circle of radius 0 at p: separation <= 0. */
+    pg_geom point;
+    pg_manifold m;
+    int32_t i;
+    for (i = 0; i < PG_MAX_POLYGON_VERTICES; ++i) {
+        point.vertices[i] = pg_v2_zero();
+        point.normals[i].x = 0;
+        point.normals[i].y = 0;
+    }
+    point.vertices[0] = p;
+    point.centroid = p;
+    point.radius = 0;
+    point.count = 1;
+    pg_collide(g, &point, 0, &m);
+    return m.count > 0 && m.points[0].separation <= 0;
 }

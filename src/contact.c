@@ -6,9 +6,13 @@
  * state. Contacts between two passive bodies (static or asleep) are carried over
  * unchanged: a sleeping pile keeps its manifolds and impulses for when it wakes.
  */
-#include "world_internal.h"
+#include "collide.h"
+#include "contact.h"
+#include "envelope.h"
+#include "events.h"
+#include "island.h"
+#include "world_types.h"
 
-void pg__push_begin_event(pg_world *world, const pg_contact *c);
 
 static int shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb)
 {

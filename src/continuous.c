@@ -58,8 +58,12 @@
  * held core changes the path that the body's later pairs see), the earliest fraction per
  * body (a minimum), bodies in index order.
  */
+#include "collide.h"
+#include "contact.h"
+#include "continuous.h"
+#include "envelope.h"
 #include "wide.h"
-#include "world_internal.h"
+#include "world_types.h"
 
 #define PG__TOI_TARGET PG_LINEAR_SLOP
 #define PG__TOI_TOLERANCE (PG_LINEAR_SLOP / 4)

@@ -2,6 +2,7 @@
  * decimal parsing and formatting. The rounding rule is the one in fixed.h. */
 #include "pogon/config.h"
 #include "pogon/fixed.h"
+#include "fixed_internal.h"
 #include "intmath.h"
 
 static uint64_t magnitude64(int64_t v) { return v < 0 ? (uint64_t)(-(v + 1)) + 1u : (uint64_t)v; }

@@ -1,4 +1,5 @@
-/* geom.h (internal) — convex geometry as the narrowphase sees it, and contact manifolds.
+/* geom.h (internal) — convex geometry as the narrowphase sees it: placing, bounding
+ * boxes (collide.h: manifolds and overlap tests; raycast.h: ray casts).
  *
  * Every primitive is a convex polygon of 1 to PG_MAX_POLYGON_VERTICES vertices with a
  * radius (the Minkowski sum of the polygon and a disc):
@@ -37,33 +38,5 @@ void pg__geom_place_slot(const pg_geom *local, pg_vec2 position, pg_rot rotation
 
 /* The bounding box of a placed geometry, radius included. */
 pg_aabb pg_geom_aabb(const pg_geom *g);
-
-typedef struct pg_manifold_point {
-    pg_vec2 point;       /* world position, midway between the two surfaces */
-    pg_fix separation;   /* signed distance along the normal; negative means overlap */
-    uint32_t id;         /* feature key: the same while the same features touch */
-} pg_manifold_point;
-
-typedef struct pg_manifold {
-    pg_dir normal;       /* unit, Q2.30, pointing from shape A to shape B */
-    pg_manifold_point points[2];
-    int32_t count;       /* 0, 1 or 2 */
-} pg_manifold;
-
-/* The contact manifold of a and b: the points whose separation is at most
- * `speculative` (>= 0) are reported. count == 0 when they are farther apart. */
-void pg_collide(const pg_geom *a, const pg_geom *b, pg_fix speculative, pg_manifold *out);
-
-/* Signed distance-style overlap test used by queries: nonzero when a and b overlap
- * (separation < 0). */
-int pg_geom_overlap(const pg_geom *a, const pg_geom *b);
-
-/* Ray cast against one geometry: origin p, direction d (any length, not zero),
- * maximum fraction max_t of d (Q16.16, e.g. PG_FIX_ONE for the segment p..p+d).
- * Returns nonzero on a hit with the fraction *t, the point and the outward normal. */
-int pg_geom_raycast(const pg_geom *g, pg_vec2 p, pg_vec2 d, pg_fix max_t, pg_fix *t, pg_vec2 *point, pg_dir *normal);
-
-/* Does the geometry contain the point (radius included)? */
-int pg_geom_contains(const pg_geom *g, pg_vec2 p);
 
 #endif

@@ -1,6 +1,6 @@
 /* intmath.h (internal) — integer helpers the core shares that are not part of the API:
- * bit lengths for normalising before a division or a square root, and the two square
- * root implementations exposed for the unit test. */
+ * bit lengths for normalising before a division or a square root (fixed_internal.h has
+ * the square root's internals). */
 #ifndef POGON_SRC_INTMATH_H
 #define POGON_SRC_INTMATH_H
 #include "pogon/fixed.h"
@@ -19,11 +19,12 @@ static inline int pg__bit_length64(uint64_t v)
 #endif
 }
 
-/* The digit-by-digit implementation behind pg_isqrt64 when PG_FAST_DIV64 is 0, built
- * whatever the setting so that the unit test checks it against the other one. */
-uint32_t pg__isqrt64_digits(uint64_t v);
-/* The seed table of the Newton implementation (entry i is round(sqrt(64 + i) 2^27)), or
- * NULL and *count = 0 when PG_FAST_DIV64 is 0. Its values decide only how fast
- * pg_isqrt64 is, never what it returns; the unit test checks them. */
-const uint32_t *pg__isqrt64_seed_nodes(uint32_t *count);
+/* Nearest integer square root of v (no ties exist for integers). */
+static inline uint64_t pg__sqrt_nearest(uint64_t v)
+{
+    uint64_t r = pg_isqrt64(v);
+    if (v - r * r > r) ++r;
+    return r;
+}
+
 #endif

@@ -3,7 +3,8 @@
  * always the root, so the result is a pure function of the state); an island whose
  * every body has rested for time_to_sleep falls asleep at once. A sleeping body keeps
  * the lowest body index of its island, so waking one wakes the whole island. */
-#include "world_internal.h"
+#include "island.h"
+#include "world_types.h"
 
 static uint32_t find_root(uint32_t *parent, uint32_t i)
 {
@@ -125,7 +126,7 @@ void pg__update_sleep(pg_world *w)
         if (w->bodies[i].sleep_time < min_time[r]) min_time[r] = w->bodies[i].sleep_time;
     }
     /* An island still pushing out a deep overlap does not sleep: that push moves positions
-     * only (solver.c, DEEP PUSH), so its bodies look at rest while they are not. */
+     * only (docs/solver-design.md, DEEP PUSH), so its bodies look at rest while they are not. */
     for (i = 0; i < n_contacts; ++i) {
         const pg_contact *c = &w->contacts[i];
         int32_t n = c->point_count; /* 0, 1 or 2 */
@@ -145,6 +146,30 @@ void pg__update_sleep(pg_world *w)
             b->v = pg_v2_zero();
             b->w = 0;
             b->island = r;
+        }
+    }
+}
+
+void pg__wake_body(pg_world *world, uint32_t body_index)
+{
+    pg_body *b = &world->bodies[body_index];
+    uint32_t island = b->island, i;
+    if (b->type == PG_BODY_STATIC) return;
+    if ((b->flags & PG_BODY_FLAG_AWAKE) != 0) {
+        b->sleep_time = 0;
+        return;
+    }
+    if (island == PG_NULL_INDEX) {
+        b->flags |= PG_BODY_FLAG_AWAKE;
+        b->sleep_time = 0;
+        return;
+    }
+    for (i = 0; i < world->body_high; ++i) {
+        pg_body *o = &world->bodies[i];
+        if ((o->flags & PG_BODY_FLAG_USED) != 0 && (o->flags & PG_BODY_FLAG_AWAKE) == 0 && o->island == island) {
+            o->flags |= PG_BODY_FLAG_AWAKE;
+            o->sleep_time = 0;
+            o->island = PG_NULL_INDEX;
         }
     }
 }

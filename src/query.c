@@ -14,8 +14,14 @@
  * products with Q2.30 normals stay below 2^62.5 and only their differences are
  * combined. A ray additionally has both ends within the envelope (checked), so every
  * shape it is tested against lies within a shape's size of +-1000 m. */
+#include "body.h"
+#include "collide.h"
+#include "envelope.h"
+#include "error.h"
+#include "raycast.h"
+#include "shape.h"
 #include "text.h"
-#include "world_internal.h"
+#include "world_types.h"
 
 static int boxes_overlap(pg_aabb a, pg_aabb b) { return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y; }
 
@@ -36,7 +42,7 @@ static const char *geometry_problem(pg_result r)
     switch (r) {
     case PG_ERR_NOT_CONVEX: return "geometry: polygon vertices must be convex and counter-clockwise (use pg_geometry_polygon)";
     case PG_ERR_DEGENERATE: return "geometry is degenerate: radius <= 0, no area, collinear vertices or an edge under 0.005 m";
-    case PG_ERR_ENVELOPE: return "geometry is outside the envelope: sizes 0.025..50 m, vertices within 50 m of its origin";
+    case PG_ERR_ENVELOPE: return "geometry is outside the envelope: radius 0.005..50 m, at least 0.01 m thick, vertices within 1000 m of its origin";
     default: return "geometry kind, count or radius do not fit together (build it with the pg_geometry_* functions)";
     }
 }

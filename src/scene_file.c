@@ -771,7 +771,7 @@ static pg_result fail_geometry(scene_parser *P, pg_result r, uint32_t column, co
     switch (r) {
     case PG_ERR_DEGENERATE: pg__text_put(&m, " is degenerate: no area or length, or repeated or collinear points"); break;
     case PG_ERR_NOT_CONVEX: pg__text_put(&m, " is not convex (list the vertices of a convex polygon, either winding)"); break;
-    case PG_ERR_ENVELOPE: pg__text_put(&m, " is outside the envelope: sizes 0.025..50 m, vertices within 50 m of the body"); break;
+    case PG_ERR_ENVELOPE: pg__text_put(&m, " is outside the envelope: radius 0.005..50 m, at least 0.01 m thick, vertices within 1000 m of the body (50 m on a dynamic or kinematic body)"); break;
     default: pg__text_put(&m, " is invalid: "); pg__text_put(&m, pg_result_message(r)); break;
     }
     return P->result;
@@ -793,6 +793,23 @@ static pg_result make_geometry(int kind, const pg_fix *size, pg_geometry g[2])
         return r != PG_OK ? r : pg_geometry_triangle(pg_v2_zero(), size[0], PG_ANGLE_QUARTER + PG_ANGLE_HALF, &g[1]);
     default: return pg_geometry_box(size[0] / 2, size[1] / 2, pg_v2_zero(), 0, &g[0]);
     }
+}
+
+/* What pg_shape_create and pg_make_* refuse for a shape too far from the origin of a body
+ * of type `type` (a static body's shapes reach farther than a moving body's), as
+ * PG_ERR_ENVELOPE at `column`; PG_OK when g fits. */
+static pg_result check_reach(scene_parser *P, const pg_geometry *g, pg_body_type type, uint32_t column, const char *kind)
+{
+    pg_fix reach = pg__geometry_reach(g);
+    msg m;
+    if (reach <= pg__body_reach_limit(type)) return PG_OK;
+    m = fail(P, PG_ERR_ENVELOPE, column);
+    pg__text_put(&m, "the ");
+    pg__text_put(&m, kind);
+    pg__text_put(&m, " reaches ");
+    pg__text_fix(&m, reach);
+    pg__text_put(&m, " m from its body's origin, beyond 50 m for a moving body (only a static body's shapes reach 1000 m)");
+    return P->result;
 }
 
 /* ---- bodies -------------------------------------------------------------------------------------------- */
@@ -915,6 +932,10 @@ static pg_result parse_make(scene_parser *P, int kind, token keyword)
     if (r != PG_OK) return r;
     r = make_geometry(kind, size, g);
     if (r != PG_OK) return fail_geometry(P, r, size_column, mk->name);
+    for (i = 0; i < (int)mk->shapes; ++i) {
+        r = check_reach(P, &g[i], pr.bd.type, size_column, mk->name);
+        if (r != PG_OK) return r;
+    }
     if (P->mode == MODE_READ && pr.bd.type == PG_BODY_DYNAMIC) { /* pg_make_* checks the whole body, then each shape as it adds it */
         uint32_t k;
         for (k = 0; k < mk->shapes; ++k) {
@@ -1050,6 +1071,8 @@ static pg_result parse_shape(scene_parser *P)
     default: r = pg_geometry_polygon(v, count, &g); break;
     }
     if (r != PG_OK) return fail_geometry(P, r, kind_column, kinds[kind]);
+    r = check_reach(P, &g, P->body.bd.type, kind_column, kinds[kind]);
+    if (r != PG_OK) return r;
     if (P->body_shapes >= 64) {
         msg m = fail(P, PG_ERR_CAPACITY, 1);
         pg__text_put(&m, "a body has at most 64 shapes (body of line ");

@@ -1,12 +1,47 @@
 /* shape.c — geometry validation, shapes on bodies, and the six ready-made kinds. */
+#include "body.h"
+#include "contact.h"
+#include "continuous.h"
+#include "def_cookie.h"
+#include "envelope.h"
+#include "error.h"
+#include "island.h"
 #include "mass.h"
-#include "world_internal.h"
+#include "reach.h"
+#include "shape.h"
+#include "wide.h"
 
-#define MAX_OFFSET PG_FIX_C(50)       /* a shape's vertices within 50 m of its body */
 #define MIN_EDGE PG_LINEAR_SLOP       /* shorter edges are degenerate */
 
-static int offset_ok(pg_vec2 p) { return p.x >= -MAX_OFFSET && p.x <= MAX_OFFSET && p.y >= -MAX_OFFSET && p.y <= MAX_OFFSET; }
-static int size_ok(pg_fix s) { return s >= PG_ENV_MIN_SIZE && s <= PG_ENV_MAX_SIZE; }
+/* A handle's shape, or NULL when the handle is stale or out of range. */
+pg_shape *pg__shape(const pg_world *world, pg_shape_id id)
+{
+    pg_shape *s;
+    if (world == NULL || id.index >= world->def.max_shapes || id.generation == 0) return NULL;
+    s = &world->shapes[id.index];
+    return (s->used && s->generation == id.generation) ? s : NULL;
+}
+
+/* A geometry on its own may reach as far as a static body allows; a moving body's
+ * shapes are held to PG_ENV_MAX_SIZE when they join it (pg__body_reach_limit). */
+static int offset_ok(pg_vec2 p)
+{
+    return p.x >= -PG_ENV_MAX_STATIC_REACH && p.x <= PG_ENV_MAX_STATIC_REACH && p.y >= -PG_ENV_MAX_STATIC_REACH &&
+           p.y <= PG_ENV_MAX_STATIC_REACH;
+}
+static int radius_ok(pg_fix r) { return r >= PG_ENV_MIN_HALF_THICKNESS && r <= PG_ENV_MAX_SIZE; }
+
+/* Whether a width cross / sqrt(e2) is at least PG_ENV_MIN_THICKNESS, compared exactly as
+ * cross^2 >= T^2 e2 in 128 bits (cross, e2 < 2^56 for vertices within the reach). */
+static int wide_enough(int64_t cross, int64_t e2)
+{
+    const uint64_t t = (uint64_t)PG_ENV_MIN_THICKNESS;
+    pg_u128 lhs, rhs;
+    if (cross <= 0) return 0;
+    lhs = pg__mul_u64((uint64_t)cross, (uint64_t)cross);
+    rhs = pg__mul_u64(t * t, (uint64_t)e2);
+    return lhs.hi > rhs.hi || (lhs.hi == rhs.hi && lhs.lo >= rhs.lo);
+}
 
 static void clear_geometry(pg_geometry *g)
 {
@@ -21,7 +56,7 @@ pg_result pg_geometry_circle(pg_vec2 center, pg_fix radius, pg_geometry *out)
 {
     if (out == NULL) return PG_ERR_NULL;
     clear_geometry(out);
-    if (!size_ok(radius)) return radius <= 0 ? PG_ERR_DEGENERATE : PG_ERR_ENVELOPE;
+    if (!radius_ok(radius)) return radius <= 0 ? PG_ERR_DEGENERATE : PG_ERR_ENVELOPE;
     if (!offset_ok(center)) return PG_ERR_ENVELOPE;
     out->kind = PG_SHAPE_CIRCLE;
     out->count = 1;
@@ -43,7 +78,7 @@ pg_result pg_geometry_segment(pg_vec2 a, pg_vec2 b, pg_geometry *out)
     pg_result r;
     if (out == NULL) return PG_ERR_NULL;
     clear_geometry(out);
-    r = two_points(a, b, 2 * PG_ENV_MIN_SIZE);
+    r = two_points(a, b, PG_ENV_MIN_THICKNESS);
     if (r != PG_OK) return r;
     out->kind = PG_SHAPE_SEGMENT;
     out->count = 2;
@@ -57,7 +92,7 @@ pg_result pg_geometry_capsule(pg_vec2 a, pg_vec2 b, pg_fix radius, pg_geometry *
     pg_result r;
     if (out == NULL) return PG_ERR_NULL;
     clear_geometry(out);
-    if (!size_ok(radius)) return radius <= 0 ? PG_ERR_DEGENERATE : PG_ERR_ENVELOPE;
+    if (!radius_ok(radius)) return radius <= 0 ? PG_ERR_DEGENERATE : PG_ERR_ENVELOPE;
     r = two_points(a, b, MIN_EDGE);
     if (r != PG_OK) return r;
     out->kind = PG_SHAPE_CAPSULE;
@@ -99,6 +134,19 @@ pg_result pg_geometry_polygon(const pg_vec2 *vertices, int32_t count, pg_geometr
         int64_t cross = ((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) - ((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
         if (cross <= 0) return PG_ERR_NOT_CONVEX;
     }
+    /* Thickness, the one rule of every shape: against each edge's line the farthest
+     * vertex lies at least PG_ENV_MIN_THICKNESS away (a box's shorter side, a thin
+     * polygon's narrowest width). */
+    for (i = 0; i < count; ++i) {
+        pg_vec2 a = out->vertices[i], b = out->vertices[(i + 1) % count];
+        int64_t ex = (int64_t)b.x - a.x, ey = (int64_t)b.y - a.y, widest = 0;
+        int32_t j;
+        for (j = 0; j < count; ++j) {
+            int64_t c = ex * ((int64_t)out->vertices[j].y - a.y) - ey * ((int64_t)out->vertices[j].x - a.x);
+            if (c > widest) widest = c;
+        }
+        if (!wide_enough(widest, ex * ex + ey * ey)) return PG_ERR_ENVELOPE;
+    }
     out->kind = PG_SHAPE_POLYGON;
     out->count = count;
     return PG_OK;
@@ -112,7 +160,8 @@ pg_result pg_geometry_box(pg_fix hw, pg_fix hh, pg_vec2 center, pg_angle angle, 
     if (out == NULL) return PG_ERR_NULL;
     clear_geometry(out);
     if (hw <= 0 || hh <= 0) return PG_ERR_DEGENERATE;
-    if (!size_ok(hw) || !size_ok(hh)) return PG_ERR_ENVELOPE;
+    if (hw < PG_ENV_MIN_HALF_THICKNESS || hh < PG_ENV_MIN_HALF_THICKNESS || hw > PG_ENV_MAX_STATIC_REACH || hh > PG_ENV_MAX_STATIC_REACH)
+        return PG_ERR_ENVELOPE;
     if (!offset_ok(center)) return PG_ERR_ENVELOPE;
     v[0] = pg_v2(-hw, -hh);
     v[1] = pg_v2(hw, -hh);
@@ -129,7 +178,7 @@ pg_result pg_geometry_triangle(pg_vec2 center, pg_fix circumradius, pg_angle ang
     if (out == NULL) return PG_ERR_NULL;
     clear_geometry(out);
     if (circumradius <= 0) return PG_ERR_DEGENERATE;
-    if (!size_ok(circumradius)) return PG_ERR_ENVELOPE;
+    if (circumradius > PG_ENV_MAX_STATIC_REACH) return PG_ERR_ENVELOPE; /* then the polygon's own rules */
     for (i = 0; i < 3; ++i) {
         pg_rot r = pg_rot_from_angle(angle + (pg_angle)((uint32_t)i * 1431655765u)); /* i/3 turn */
         v[i] = pg_v2_add(center, pg_v2(pg__mul_q30(circumradius, r.c), pg__mul_q30(circumradius, r.s)));
@@ -203,7 +252,7 @@ static pg_result check_geometry(const pg_world *world, const pg_geometry *g)
     case PG_ERR_DEGENERATE:
         return pg__fail(world, r, "geometry is degenerate: zero or negative radius, zero area, collinear vertices or an edge under 0.005 m");
     case PG_ERR_ENVELOPE:
-        return pg__fail(world, r, "geometry is outside the envelope: radius and half extents 0.025..50 m, vertices within 50 m of the body origin");
+        return pg__fail(world, r, "geometry is outside the envelope: radius 0.005..50 m, at least 0.01 m thick (a box's sides, a polygon's narrowest width, a segment's length), vertices within 1000 m of the body origin");
     default:
         return pg__fail(world, r, "geometry kind, count or radius do not match: circle 1 vertex, segment 2 and radius 0, capsule 2, polygon 3..8 and radius 0 (use the pg_geometry_* functions)");
     }
@@ -254,6 +303,7 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     if (r != PG_OK) return r;
     r = check_geometry(world, geometry);
     if (r != PG_OK) return r;
+    if (pg__geometry_reach(geometry) > pg__body_reach_limit(b->type)) return pg__fail_reach(world, pg__geometry_reach(geometry), b->type);
     if (b->shape_count >= 64) return pg__fail(world, PG_ERR_CAPACITY, "a body has at most 64 shapes");
     if (b->type == PG_BODY_DYNAMIC) {
         pg_geom local;
@@ -367,6 +417,8 @@ static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_de
         r = check_shape_def(w, &probe, sd);
         for (i = 0; r == PG_OK && i < n; ++i) r = check_geometry(w, &g[i]);
         if (r != PG_OK) return r;
+        for (i = 0; i < n; ++i)
+            if (pg__geometry_reach(&g[i]) > pg__body_reach_limit(bd->type)) return pg__fail_reach(w, pg__geometry_reach(&g[i]), bd->type);
         if (bd->type == PG_BODY_DYNAMIC) {
             pg_geom locals[2];
             const pg_geom *ptrs[2];
@@ -404,7 +456,7 @@ pg_result pg_make_ball(pg_world *w, const pg_body_def *bd, const pg_shape_def *s
 {
     pg_geometry g;
     pg_result r = pg_geometry_circle(pg_v2_zero(), radius, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "ball radius must be 0.025..50 m");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "ball radius must be 0.005..50 m");
     return make_body(w, bd, sd, &g, 1, out);
 }
 
@@ -412,7 +464,7 @@ pg_result pg_make_capsule(pg_world *w, const pg_body_def *bd, const pg_shape_def
 {
     pg_geometry g;
     pg_result r = length < 0 ? PG_ERR_DEGENERATE : pg_geometry_capsule(pg_v2(-length / 2, 0), pg_v2(length - length / 2, 0), radius, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "capsule length must be 0.005..100 m and radius 0.025..50 m");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "capsule length must be 0.005..2000 m and radius 0.005..50 m (a dynamic or kinematic capsule reaches at most 50 m from its centre)");
     return make_body(w, bd, sd, &g, 1, out);
 }
 
@@ -420,7 +472,7 @@ pg_result pg_make_box(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd
 {
     pg_geometry g;
     pg_result r = pg_geometry_box(width / 2, height / 2, pg_v2_zero(), 0, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "box sides must be 0.05..100 m");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "box sides must be 0.01..2000 m (0.01..100 m on a dynamic or kinematic body)");
     return make_body(w, bd, sd, &g, 1, out);
 }
 
@@ -428,7 +480,7 @@ pg_result pg_make_triangle(pg_world *w, const pg_body_def *bd, const pg_shape_de
 {
     pg_geometry g;
     pg_result r = pg_geometry_triangle(pg_v2_zero(), circumradius, PG_ANGLE_QUARTER, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "triangle circumradius must be 0.025..50 m");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "triangle circumradius must be 0.0067..1000 m (at least 0.01 m thick; up to 50 m on a dynamic or kinematic body)");
     return make_body(w, bd, sd, &g, 1, out);
 }
 
@@ -437,7 +489,7 @@ pg_result pg_make_star(pg_world *w, const pg_body_def *bd, const pg_shape_def *s
     pg_geometry g[2];
     pg_result r = pg_geometry_triangle(pg_v2_zero(), circumradius, PG_ANGLE_QUARTER, &g[0]);
     if (r == PG_OK) r = pg_geometry_triangle(pg_v2_zero(), circumradius, PG_ANGLE_QUARTER + PG_ANGLE_HALF, &g[1]);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "star circumradius must be 0.025..50 m");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "star circumradius must be 0.0067..1000 m (at least 0.01 m thick; up to 50 m on a dynamic or kinematic body)");
     return make_body(w, bd, sd, g, 2, out);
 }
 
@@ -453,6 +505,6 @@ pg_result pg_make_wall(pg_world *w, const pg_body_def *bd, const pg_shape_def *s
     def.linear_velocity = pg_v2_zero();
     def.angular_velocity = 0;
     r = pg_geometry_box(width / 2, height / 2, pg_v2_zero(), 0, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "wall sides must be 0.05..100 m");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "wall sides must be 0.01..2000 m");
     return make_body(w, &def, sd, &g, 1, out);
 }

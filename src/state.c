@@ -327,7 +327,7 @@ typedef struct source {
     size_t error_offset;
     /* validation pass only: what it has read so far, to check cross-references (kept
      * in the world's per-step scratch, which no state depends on) */
-    uint32_t *body_info;    /* 5 per body: used, first shape, shape count, active, island */
+    uint32_t *body_info;    /* 5 per body: used (0, or 1 + its type), first shape, shape count, active, island */
     uint32_t n_bodies, n_shapes;
     uint32_t *shape_owner;  /* per shape: owning body, or PG_NULL_INDEX when unused */
     uint32_t *shape_next;
@@ -551,7 +551,7 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                     b.origin = pg_v2_sub(b.center, pg_rot_apply(b.rot, b.local_center));
                 }
                 if (r->body_info != NULL) {
-                    r->body_info[5u * i] = used;
+                    r->body_info[5u * i] = used ? 1u + (uint32_t)b.type : 0u;
                     r->body_info[5u * i + 1u] = used ? b.first_shape : PG_NULL_INDEX;
                     r->body_info[5u * i + 2u] = b.shape_count;
                     r->body_info[5u * i + 3u] = used ? (uint32_t)pg__body_is_active(&b) : 0u;
@@ -612,6 +612,11 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
                     sh.category = take_u32(r, "shape.category");
                     sh.mask = take_u32(r, "shape.mask");
                     if (r->error_field == NULL && pg__validate_geometry(&sh.geometry) != PG_OK) invalid(r, at, "shape.geometry");
+                    /* a moving body's shapes reach less far than a static one's (validation pass:
+                     * the bodies, read before the shapes, are in body_info) */
+                    if (r->error_field == NULL && r->body_info != NULL && sh.body < r->n_bodies && r->body_info[5u * sh.body] != 0u &&
+                        pg__geometry_reach(&sh.geometry) > pg__body_reach_limit((pg_body_type)(r->body_info[5u * sh.body] - 1u)))
+                        invalid(r, at, "shape.geometry (reaches farther from its body's origin than the body's type allows)");
                     if (sh.density < 0 || sh.density > PG_FIX_C(100) || sh.friction < 0 || sh.friction > PG_FIX_C(10) ||
                         sh.restitution < 0 || sh.restitution > PG_FIX_ONE)
                         invalid(r, at, "shape.material");

@@ -1,76 +1,12 @@
-/* world.c — world creation inside caller memory, the step's order, results and events. */
-#include "text.h"
-#include "world_internal.h"
-
-/* ---- results -------------------------------------------------------------------- */
-static const char *const result_names[PG_RESULT_COUNT] = {
-    "PG_OK", "PG_ERR_NULL", "PG_ERR_INVALID_ARGUMENT", "PG_ERR_STALE_HANDLE", "PG_ERR_CAPACITY",
-    "PG_ERR_MEMORY", "PG_ERR_ENVELOPE", "PG_ERR_DEGENERATE", "PG_ERR_NOT_CONVEX", "PG_ERR_BODY_TYPE",
-    "PG_ERR_NOT_FOUND"};
-static const char *const result_messages[PG_RESULT_COUNT] = {
-    "success",
-    "a required pointer argument is NULL: pass a valid object or output pointer",
-    "an argument has a value the function does not accept: see the function's documentation",
-    "the handle names a body or shape that was destroyed: drop the handle",
-    "a pool is full: create the world with larger max_bodies / max_shapes / max_contacts",
-    "the memory block is too small: allocate pg_world_memory_size(&def) bytes, aligned to 8",
-    "a value is outside pogon's envelope (README, Envelope): scale the scene into range",
-    "degenerate geometry (no area or length, or repeated/collinear points): fix the vertices",
-    "polygon vertices do not form a convex polygon: pass the convex hull",
-    "the operation does not apply to this body type (e.g. a force on a static body)",
-    "nothing was found"};
-
-const char *pg_result_name(pg_result r)
-{
-    return (unsigned)r < PG_RESULT_COUNT ? result_names[r] : "PG_ERR_UNKNOWN";
-}
-
-const char *pg_result_message(pg_result r)
-{
-    return (unsigned)r < PG_RESULT_COUNT ? result_messages[r] : "unknown result code";
-}
-
-pg_result pg__fail(const pg_world *world, pg_result r, const char *detail)
-{
-    if (world != NULL) {
-        /* last_error is diagnostic scratch, not simulation state: writing it through a
-         * const world is the one exception to "failing calls change nothing". */
-        pg_world *w = (pg_world *)(uintptr_t)world;
-        pg__text t = pg__text_in(w->last_error, sizeof w->last_error);
-        pg__text_put(&t, result_names[r]);
-        pg__text_put(&t, ": ");
-        pg__text_put(&t, detail);
-    }
-    return r;
-}
-
-/* "before VALUE after" into buf */
-static void join_value(char *buf, size_t cap, const char *before, pg_fix value, const char *after)
-{
-    pg__text t = pg__text_in(buf, cap);
-    pg__text_put(&t, before);
-    pg__text_put(&t, " ");
-    pg__text_fix(&t, value);
-    pg__text_put(&t, " ");
-    pg__text_put(&t, after);
-}
-
-pg_result pg__fail_value(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *bound)
-{
-    char buf[144];
-    join_value(buf, sizeof buf, what, value, bound);
-    return pg__fail(world, r, buf);
-}
-
-pg_result pg__fail_limit(const pg_world *world, pg_result r, const char *what, pg_fix value, const char *relation, pg_fix limit,
-                         const char *unit)
-{
-    char buf[144];
-    join_value(buf, sizeof buf, relation, limit, unit);
-    return pg__fail_value(world, r, what, value, buf);
-}
-
-const char *pg_world_last_error(const pg_world *world) { return world != NULL ? world->last_error : ""; }
+/* world.c — world creation inside caller memory, settings, and the step: the
+ * orchestrator on top of the stages it runs (docs/architecture.md). */
+#include "body.h"
+#include "contact.h"
+#include "def_cookie.h"
+#include "error.h"
+#include "island.h"
+#include "solver.h"
+#include "world_types.h"
 
 /* ---- definition and memory ------------------------------------------------------------ */
 pg_world_def pg_default_world_def(void)
@@ -203,61 +139,6 @@ pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_s
     return PG_OK;
 }
 
-/* ---- handles ------------------------------------------------------------------------------ */
-pg_body *pg__body(const pg_world *world, pg_body_id id)
-{
-    pg_body *b;
-    if (world == NULL || id.index >= world->def.max_bodies || id.generation == 0) return NULL;
-    b = &world->bodies[id.index];
-    return ((b->flags & PG_BODY_FLAG_USED) != 0 && b->generation == id.generation) ? b : NULL;
-}
-
-pg_shape *pg__shape(const pg_world *world, pg_shape_id id)
-{
-    pg_shape *s;
-    if (world == NULL || id.index >= world->def.max_shapes || id.generation == 0) return NULL;
-    s = &world->shapes[id.index];
-    return (s->used && s->generation == id.generation) ? s : NULL;
-}
-
-/* ---- events ---------------------------------------------------------------------------------- */
-static pg_contact_event make_event(const pg_world *world, const pg_contact *c)
-{
-    pg_contact_event e;
-    e.shape_a.index = c->shape_a;
-    e.shape_a.generation = world->shapes[c->shape_a].generation;
-    e.shape_b.index = c->shape_b;
-    e.shape_b.generation = world->shapes[c->shape_b].generation;
-    e.body_a.index = c->body_a;
-    e.body_a.generation = world->bodies[c->body_a].generation;
-    e.body_b.index = c->body_b;
-    e.body_b.generation = world->bodies[c->body_b].generation;
-    return e;
-}
-
-void pg__push_end_event(pg_world *world, const pg_contact *c)
-{
-    if (world->end_count < world->def.max_contacts) world->end_events[world->end_count++] = make_event(world, c);
-}
-
-void pg__push_begin_event(pg_world *world, const pg_contact *c);
-void pg__push_begin_event(pg_world *world, const pg_contact *c)
-{
-    if (world->begin_count < world->def.max_contacts) world->begin_events[world->begin_count++] = make_event(world, c);
-}
-
-const pg_contact_event *pg_world_begin_events(const pg_world *world, uint32_t *count)
-{
-    if (count != NULL) *count = world != NULL ? world->begin_count : 0;
-    return world != NULL ? world->begin_events : NULL;
-}
-
-const pg_contact_event *pg_world_end_events(const pg_world *world, uint32_t *count)
-{
-    if (count != NULL) *count = world != NULL ? world->end_count : 0;
-    return world != NULL ? world->end_events : NULL;
-}
-
 /* ---- settings --------------------------------------------------------------------------------- */
 pg_result pg_world_set_gravity(pg_world *world, pg_vec2 gravity)
 {
@@ -339,10 +220,8 @@ pg_result pg_world_step(pg_world *world)
      * pass over its bodies and contacts, not a step. Every command that changes what a step
      * would do wakes a body or dirties its geometry: a shape created or destroyed, a body
      * destroyed (its contacts go with it), a type or a filter changed (a static body's too),
-     * a restore. Until session 11 a pass over every contact re-checked shapes and filters
-     * each such step, 21 000 of a sleeping pyramid's 25 000 instructions; a filter change on
-     * a static body, which wakes nothing, was the one edit it caught, and now dirties the
-     * body instead. test_world_at_rest_skips_step_exactly,
+     * a restore; a filter change on a static body, which wakes nothing, dirties the body for
+     * this reason. test_world_at_rest_skips_step_exactly,
      * test_world_at_rest_sees_a_static_filter_change and the replay corpus (recorded
      * through the full step) check that the state is the same. */
     if (moving == 0) {

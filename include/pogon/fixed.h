@@ -25,7 +25,7 @@
  *   makes resting bodies creep, so pogon never truncates toward -infinity on values
  *   that can be negative. The rule is written once, in pg__round_shift64()
  *   (pogon/detail/fixed_internal.h).
- *   The one other rule: the contact solver's rows (src/solver.c, ROUNDING) round to
+ *   The one other rule: the contact solver's rows (docs/solver-design.md, ROUNDING) round to
  *   nearest with ties toward +infinity, (x + 2^(n-1)) >> n, which differs from this
  *   rule only at an exact tie of a negative value, by one unit, and costs half the
  *   operations in the step's hottest loop. Where ties are common, the angular speed

@@ -45,13 +45,20 @@
  *   mass      int64 Q32.32 kg          inertia   int64 Q28.36 kg m^2
  *   forces and torques accumulate in int64 Q48.16 within a step.
  *
- * THE ENVELOPE (checked at creation; see README "Envelope")
- *   radius, half extent or circumradius 0.025 .. 50 m; polygon edges >= 0.005 m and
- *   vertices within 50 m of the body origin; a rotating dynamic body's inertia
- *   3.0e-8 .. 1.3e8 kg m^2 and radius of gyration >= 2^-8 m (its inverses' formats);
+ * THE ENVELOPE (checked at creation; docs/envelope.md says why each limit holds)
+ *   thickness: every shape at least 0.01 m across in every direction, one rule for every
+ *     way of making it: a radius of 0.005 .. 50 m, a box's sides, a polygon's narrowest
+ *     width (pg_geometry_polygon and pg_geometry_box alike), a segment's length; polygon
+ *     edges >= 0.005 m.
+ *   reach: a shape's vertices within 50 m of the origin of a dynamic or kinematic body
+ *     (their lever arms), within 1000 m of a static body's origin (no mass, no lever
+ *     arm: a 2 000 m ground from -1000 to 1000 m is one shape).
+ *   a rotating dynamic body's inertia 3.0e-8 .. 1.3e8 kg m^2 and radius of gyration
+ *   >= 2^-8 m (its inverses' formats; a 0.01 m ball needs fixed rotation);
  *   density 0.1 .. 100 kg/m^2 (0 allowed on static bodies), friction 0 .. 10,
  *   restitution 0 .. 1, positions within +-1000 m, speeds up to max_linear_speed
  *   (default 400 m/s, a cap that is counted in pg_world_stats.speed_clamps).
+ *   Everything outside is refused with PG_ERR_ENVELOPE and a message naming the limit.
  */
 #ifndef POGON_POGON_H
 #define POGON_POGON_H
@@ -301,7 +308,9 @@ typedef enum pg_shape_kind {
 /** A convex primitive in its own frame. Build one with the pg_geometry_* functions,
  * which validate it. A circle is vertices[0] + radius; a capsule or segment is
  * vertices[0..1] + radius (0 for a segment); a polygon is 3..8 vertices,
- * counter-clockwise and convex, radius 0. */
+ * counter-clockwise and convex, radius 0. A geometry on its own may reach 1000 m from
+ * its frame's origin (a static body's limit) and must be 0.01 m thick (THE ENVELOPE);
+ * pg_shape_create and pg_make_* hold a dynamic or kinematic body's shapes to 50 m. */
 typedef struct pg_geometry {
     pg_shape_kind kind;                /**< which primitive */
     int32_t count;                     /**< vertices in use */

@@ -354,7 +354,7 @@ static void test_mass_ratio_100_light_on_heavy(void **state) { (void)state; expe
  * substeps (2 is the fast preset's) at 30 Hz and 4 substeps at 60 Hz, with the defaults
  * as the control. The pair (4:1 and beyond) and the light box's ground contact get the
  * stiffer softness, twice the contact's hertz but never past a quarter of the substep
- * rate (SOFTNESS CAP in src/solver.c), where the soft step stops being stable. So at
+ * rate (docs/solver-design.md, SOFTNESS CAP), where the soft step stops being stable. So at
  * rest, with g (1 + R) the load per unit of the light box's mass (R the ratio), the boxes
  * overlap by g (1 + R) / omega^2 (see test_mass_ratio_1000_no_pass_through), omega =
  * 2 pi min(2 hz, n / 4), n the substeps a second. 1:100: 0.1137 m (1 substep: 15 Hz),
@@ -467,7 +467,7 @@ static void test_mass_ratio_1000_no_explosion(void **state)
  * passes the face, in every case: pressed in by less than half its size. Measured 0.83
  * half sizes at worst on the ground (0.3 m, density 0.3, 1:111, 10 m/s) and 0.78 at the
  * wall. Before the solver took the contacts with a side that cannot move last in each
- * pass (solver.c, ORDER), 34 of the 135 centres went below the ground (up to 1.74 half
+ * pass (docs/solver-design.md, ORDER), 34 of the 135 centres went below the ground (up to 1.74 half
  * sizes) and 31 past the wall (up to 1.74). */
 static double pinch_depth(int wall, double ls, double density, double speed, double offset)
 {
@@ -860,7 +860,7 @@ static void test_head_on_boxes(void **state)
  *     placed where the box is, touches nothing: pg_world_query_geometry);
  *   - and they rest side by side: every two neighbours' centres 1 m apart to within
  *     OVERLAP_TOL. Push-out beyond what holds a contact's load moves positions without
- *     becoming momentum (src/solver.c, DEEP PUSH), so a box stops where its overlaps
+ *     becoming momentum (docs/solver-design.md, DEEP PUSH), so a box stops where its overlaps
  *     open; until session 9 the push-out was all velocity, the boxes slid on and ended
  *     spread over 13 m, neighbours up to 1.99 m apart.
  * (Before session 5 the second point asserted every speed after the separation below
@@ -970,7 +970,7 @@ static void test_deep_overlap_separates(void **state)
  * velocity: box k rose at up to k times the cap while the overlaps opened, and nothing
  * took the momentum back (centres 0.5 m apart: 15.3 m/s, the top 8.4 m above where it
  * rests). Now only push_max / 32 of a contact's push-out beyond what holds its load
- * becomes velocity, the rest moves positions only (src/solver.c, DEEP PUSH). Asserted,
+ * becomes velocity, the rest moves positions only (docs/solver-design.md, DEEP PUSH). Asserted,
  * for centres 0.2, 0.5 and 0.8 m apart:
  *   - no box is faster than what the velocity parts of the push-outs add up to along the
  *     column, 10 (push_max / 32) = 0.94 m/s;
@@ -1087,16 +1087,12 @@ static void test_slow_push_out_is_not_put_to_sleep(void **state)
  * the top of each bounce (the step at which vy turns from + to -), never exceeds the
  * initial g h0 by more than 1 %. Restitution 0: at rest within 2 s of the release.
  *
- * And it bounces as restitution 1 says, up to a known loss: the rebound is set from the
- * approach speed v just before the contact first pushes, at the start of the substep in
- * which the ball reaches the ground (src/solver.c, APPROACH), so it misses at most the
- * g h (h the substep) the ball gains in that substep: g v h of energy per bounce, plus
- * the integrator's g v h at the apex. So each apex's energy is at least the previous
- * one's minus 2 g v h, with v = sqrt(2 E_prev), while v is clearly above the
- * restitution threshold (1 m/s; below it the ball stops bouncing). A restitution scaled
- * by 0.98 takes 4 % more per bounce and fails this, and so does the rebound from the
- * approach speed at the step's start (g v dt, four substeps' worth: 5.6 % at the first
- * bounce), which pogon used until session 6.
+ * And it bounces as restitution 1 says: each apex's energy is at least the previous
+ * one's minus 2 g v h (h the substep), with v = sqrt(2 E_prev), while v is clearly above
+ * the restitution threshold (1 m/s; below it the ball stops bouncing). A restitution
+ * scaled by 0.98 takes 4 % more per bounce and fails this, and so does the rebound from
+ * the approach speed at the step's start (g v dt: 5.6 % at the first bounce).
+ * test_bounce_energy holds the loss to 0.1 % a bounce (docs/solver-design.md, SUBSTEP PHASE).
  * ===================================================================================== */
 static void test_bounce_energy_never_grows(void **state)
 {
@@ -1293,7 +1289,7 @@ static int expect_rest(const char *label, rest_run r, double tol)
     return ok;
 }
 
-/* 0.05 m boxes (the smallest body) at both density edges: rest within 10 % of their size. */
+/* 0.05 m boxes (thinner shapes: test_envelope_shapes.c) at both density edges: rest within 10 % of their size. */
 static void test_edge_smallest_box_rests(void **state)
 {
     int ok = 1;
@@ -1304,7 +1300,7 @@ static void test_edge_smallest_box_rests(void **state)
     if (!ok) fail();
 }
 
-/* 100 m boxes (the largest body) on a 100 m ground: rest within 1 mm. (1 cm until session
+/* 100 m boxes (the largest dynamic body) on a 100 m ground: rest within 1 mm. (1 cm until session
  * 5: a box landing flat drifted 6.3 mm, its two contact points solved one after the
  * other; solved together the landing is symmetric and the drift 0. What is left of the
  * 1 mm is the soft contact's sink, 0.07 mm under a 100 m box on a static side.) */
@@ -1543,10 +1539,10 @@ static void test_edge_beyond_is_refused(void **state)
     pg_body_def bd = dynamic_at(0, 0), b2;
     pg_body_id id;
     (void)state;
-    expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(0.04), fx(0.04), &id), "0.04 m box");
-    expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(0.04), PG_FIX_ONE, &id), "0.04 x 1 m box");
+    expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(0.008), fx(0.008), &id), "0.008 m box");
+    expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(0.008), PG_FIX_ONE, &id), "0.008 x 1 m box");
     expect_refused(t.w, pg_make_box(t.w, &bd, &sd, fx(100.5), PG_FIX_ONE, &id), "100.5 m box");
-    expect_refused(t.w, pg_make_ball(t.w, &bd, &sd, fx(0.02), &id), "ball of radius 0.02 m");
+    expect_refused(t.w, pg_make_ball(t.w, &bd, &sd, fx(0.004), &id), "ball of radius 0.004 m");
     s2 = sd; s2.density = PG_FIX_C(101);
     expect_refused(t.w, pg_make_box(t.w, &bd, &s2, PG_FIX_ONE, PG_FIX_ONE, &id), "density 101");
     s2.density = fx(0.09);

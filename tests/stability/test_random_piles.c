@@ -35,7 +35,7 @@
  * test_bouncy_piles: 40 of the same piles with every restitution 1, where the energy
  * must still never rise above its start. (Until session 7 it rose by up to 194 %: a
  * point that first pushed in a later substep rebounded from an approach speed that
- * other contacts' pushes had made in this step; solver.c, APPROACH.) With nothing lost
+ * other contacts' pushes had made in this step; docs/solver-design.md, APPROACH.) With nothing lost
  * at impacts the energy may gather in a light body and throw it over a wall, so
  * containment is not asserted there.
  *

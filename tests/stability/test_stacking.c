@@ -149,7 +149,7 @@ static void run_stack(uint32_t effects)
         fail();
     }
     /* The column sinks as far as its soft contacts say, no further and no less. The two
-     * points of a face contact are solved together (solver.c, BLOCK), as one soft
+     * points of a face contact are solved together (docs/solver-design.md, BLOCK), as one soft
      * constraint whose effective mass for sinking evenly at both points is the pair's
      * reduced mass: each point's row has K = a + (r x n)^2 / I terms with a = 1/mA + 1/mB,
      * and for two corners at r x n = +-0.5 the coupled system gives the sink mode

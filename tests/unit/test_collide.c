@@ -9,7 +9,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "geom.h"
+#include "collide.h"
+#include "raycast.h"
 
 #define Q30 1073741824.0
 #define SPEC ((pg_fix)1311) /* 0.02 m */

@@ -5,7 +5,8 @@
  * integer reasoning written out in the test); doubles are not used for exact results.
  */
 #include "pg_test.h"
-#include "intmath.h" /* the square roots' internals */
+#include "fixed_internal.h" /* the square roots' internals */
+#include "intmath.h"
 
 #include <limits.h>
 

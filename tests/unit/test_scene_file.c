@@ -542,6 +542,11 @@ static void test_malformed_inputs(void **state)
         {"pogon-scene 1\nmax_linear_speed 10\nball 1 linear_velocity 8 8\n", PG_ERR_ENVELOPE, 3, 24, "above max_linear_speed 10"},
         {"pogon-scene 1\nball 60\n", PG_ERR_ENVELOPE, 2, 6, "the ball is outside the envelope"},
         {"pogon-scene 1\nbox 0 1\n", PG_ERR_DEGENERATE, 2, 5, "the box is degenerate"},
+        /* a moving body's shapes reach 50 m from its origin, a static body's 1000 m */
+        {"pogon-scene 1\nbox 120 1\n", PG_ERR_ENVELOPE, 2, 5, "the box reaches 60 m from its body's origin, beyond 50 m"},
+        {"pogon-scene 1\nbody kinematic\n  shape box 120 1\nend\n", PG_ERR_ENVELOPE, 3, 9, "the box reaches 60 m"},
+        {"pogon-scene 1\nwall 2000.5 1\n", PG_ERR_ENVELOPE, 2, 6, "the wall is outside the envelope"},
+        {"pogon-scene 1\nbox 1 0.009\n", PG_ERR_ENVELOPE, 2, 5, "the box is outside the envelope"},
         /* mass data a dynamic body cannot have (pg__mass_data_problem), checked as loading
          * will: for a ready-made body, and for each shape of a body block in turn */
         {"pogon-scene 1\nbox 100 100 density 100\n", PG_ERR_ENVELOPE, 2, 5,

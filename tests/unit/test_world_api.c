@@ -519,7 +519,7 @@ static void test_envelope(void **state)
     expect_envelope(w, pg_body_create(w, &b2, &id), "position");
     b2 = bd; b2.linear_velocity = pg_v2(pg_fix_add(d.max_linear_speed, PG_FIX_ONE), 0);
     expect_envelope(w, pg_make_ball(w, &b2, &sd, PG_FIX_ONE, &id), "velocity");
-    expect_envelope(w, pg_make_ball(w, &bd, &sd, fx(0.01), &id), "radius");
+    expect_envelope(w, pg_make_ball(w, &bd, &sd, fx(0.004), &id), "radius"); /* below 0.005 m: thinner than 0.01 m */
     expect_envelope(w, pg_make_ball(w, &bd, &sd, PG_FIX_C(60), &id), "radius");
     assert_int_equal(body_count(w), 1);
     assert_int_equal(shape_count(w), 1);

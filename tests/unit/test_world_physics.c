@@ -286,7 +286,7 @@ static void test_sliding_box_decelerates_at_mu_g(void **state)
 
 /* ---- a face contact's friction acts at the face ------------------------------------------------------ */
 /* The same box sliding at 5 m/s on friction 0.5. Its face contact has one friction row
- * (src/solver.c, CENTRAL FRICTION), which must act where friction acts, at the face, half
+ * (docs/solver-design.md, CENTRAL FRICTION), which must act where friction acts, at the face, half
  * the box's height below its centre: its moment mu N h/2 tips the box onto its leading
  * edge, so the leading point carries N_lead - N_trail = mu N h / w, 3/4 of the weight for
  * a 1 m cube at mu 0.5 (a row acting at the centre would leave 1/2 on each). The two
@@ -611,7 +611,7 @@ static void test_restitution_one_bounces_back(void **state)
     (void)state;
     assert_true(b.hits >= 1);
     print_message("restitution 1: dropped from %.3f m, first bounce reaches %.4f m\n", drop, b.first_apex);
-    /* it misses at most a substep's g h of the approach speed (src/solver.c, APPROACH) and
+    /* it misses at most a substep's g h of the approach speed (docs/solver-design.md, APPROACH) and
      * the integrator as much at the apex: 2 g v h / g = 2 v h = 0.053 m at v = 6.3 m/s */
     expect_near(b.first_apex, drop, 0.03 * drop, "restitution 1: height of the first bounce (m)");
 }
@@ -1125,7 +1125,7 @@ static void test_without_continuous_bullet_tunnels(void **state)
 }
 
 /* ---- saturation and low step rates --------------------------------------------------------------- */
-/* The solver's integration, restated exactly (src/solver.c): n = step_hz * substeps
+/* The solver's integration, restated exactly (src/solver.c, integrate_velocities): n = step_hz * substeps
  * substeps per second, h = round(2^32 / n) (Q32 s); in substep k (t_k = k h) velocity
  * changes by round(a t_(k+1) / 2^32) - round(a t_k / 2^32), and the angle by the binary
  * angle round(w A / 2^24) modulo 2^32 (a full turn), A = round(174992710548 / n) (2^40 /

@@ -652,6 +652,8 @@ typedef struct step_ctx {
     double push_max, push_floor; /* push_floor: push_max / 32 (DEEP PUSH) */
     int friction;
     double t_end; /* the current substep's end, s */
+    double h;     /* the substep, s */
+    int last;     /* this is the step's last substep */
 } step_ctx;
 
 /* The normal row of point p at separation s: b = relative speed + bias (what the row
@@ -691,14 +693,20 @@ static double normal_update(const softness *soft, const spoint *p, double y, int
     return is_soft ? p->ln - soft->mass_scale * y - soft->impulse_scale * p->ln : p->ln - y;
 }
 
-/* rel: the relative normal speed the row was solved from; a point's approach speed for
- * restitution is, as in pogon (APPROACH), the less of the speed just before it first
- * pushes in the step and the step's start speed plus what gravity added since. */
-static void normal_apply(const step_ctx *ctx, sbody *A, sbody *B, spoint *p, double acc, double rel)
+/* rel: the relative normal speed the row was solved from, s its separation, relax the
+ * pass; a point's approach speed for restitution is, as in pogon (APPROACH, SUBSTEP
+ * PHASE), the closing speed at the instant the gap closes: u + a (tau - h/2), u the less
+ * of the speed just before it first pushes (a relax pass adds the coming kick) and the
+ * step's start speed plus what gravity added by the end of the closing substep,
+ * tau = s / |u| at most h (0 when the last relax pass foresees the next step). */
+static void normal_apply(const step_ctx *ctx, sbody *A, sbody *B, spoint *p, double acc, double rel, double s, int relax)
 {
     if (p->max_ln == 0) {
-        double external = p->approach_start + p->approach_accel * ctx->t_end;
-        p->relative_velocity = rel > external ? rel : external;
+        double a = p->approach_accel, external = p->approach_start + a * (ctx->t_end + (relax ? ctx->h : 0)), u, tau = 0;
+        if (relax) rel += a * ctx->h;
+        u = rel > external ? rel : external;
+        if (s > 0 && u < 0 && !(relax && ctx->last)) tau = s / -u < ctx->h ? s / -u : ctx->h;
+        p->relative_velocity = u + a * (tau - ctx->h / 2);
     }
     if (acc < 0) acc = 0;
     apply(A, B, acc - p->ln, p->lnA, p->lnB, p->gnA, p->gnB);
@@ -741,7 +749,7 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         }
     }
     if (c->block) {
-        /* both rows at once: the change -E^-1 b (pogon's solver.c, BLOCK) */
+        /* both rows at once: the change -E^-1 b (pogon: docs/solver-design.md, BLOCK) */
         spoint *p0 = &c->p[0], *p1 = &c->p[1];
         int soft0, soft1;
         double rel0 = rel_speed(A, B, n, p0->cnA, p0->cnB), rel1 = rel_speed(A, B, n, p1->cnA, p1->cnB);
@@ -750,8 +758,8 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         double det = 1 - c->e01 * c->e10, y0 = (b0 - c->e01 * b1) / det, y1 = (b1 - c->e10 * b0) / det;
         double acc0 = normal_update(soft, p0, y0, soft0), acc1 = normal_update(soft, p1, y1, soft1);
         if (acc0 >= 0 && acc1 >= 0) {
-            normal_apply(ctx, A, B, p0, acc0, rel0);
-            normal_apply(ctx, A, B, p1, acc1, rel1);
+            normal_apply(ctx, A, B, p0, acc0, rel0, s[0], !use_bias);
+            normal_apply(ctx, A, B, p1, acc1, rel1, s[1], !use_bias);
             done = 1;
         }
     }
@@ -759,7 +767,7 @@ static void solve(ref_world *w, const step_ctx *ctx, constraint *c, int use_bias
         int i = order ? c->count - 1 - k : k, is_soft;
         spoint *p = &c->p[i];
         double rel = rel_speed(A, B, n, p->cnA, p->cnB), b = normal_target(ctx, p, s[i], rel, use_bias, &is_soft);
-        normal_apply(ctx, A, B, p, normal_update(soft, p, b, is_soft), rel);
+        normal_apply(ctx, A, B, p, normal_update(soft, p, b, is_soft), rel, s[i], !use_bias);
     }
     if (ctx->friction) {
         /* one row, as in pogon: a single point's, or a face contact's central row (with
@@ -807,7 +815,7 @@ void ref_step(ref_world *w)
     /* 2. contacts */
     update_contacts(w);
     /* 3. solve */
-    /* the softness cap of src/solver.c: neither softness stiffer than a quarter of the
+    /* the softness cap of src/contact_solver.c: neither softness stiffer than a quarter of the
      * substep rate */
     if (hertz * 4 > n_per_s) hertz = n_per_s / 4;
     ctx.n = n_per_s;
@@ -916,6 +924,8 @@ void ref_step(ref_world *w)
     for (sub = 0; sub < d->substeps; ++sub) {
         int order = sub & 1;
         ctx.t_end = h * (sub + 1);
+        ctx.h = h;
+        ctx.last = sub + 1 == d->substeps;
         for (i = 0; i < w->count; ++i) {
             sbody *s = &w->sbodies[i];
             if (!s->dynamic) continue;
@@ -975,10 +985,11 @@ void ref_step(ref_world *w)
             if (c->restitution == 0) continue;
             if (c->block && c->p[0].relative_velocity <= -d->restitution_threshold && c->p[0].max_ln != 0 &&
                 c->p[1].relative_velocity <= -d->restitution_threshold && c->p[1].max_ln != 0) {
-                /* both points bounce: together (pogon's solver.c, BLOCK) */
+                /* both points bounce: together (pogon: docs/solver-design.md, BLOCK) */
                 spoint *p0 = &c->p[0], *p1 = &c->p[1];
-                double b0 = rel_speed(A, B, c->n, p0->cnA, p0->cnB) + c->restitution * p0->relative_velocity;
-                double b1 = rel_speed(A, B, c->n, p1->cnA, p1->cnB) + c->restitution * p1->relative_velocity;
+                /* plus a h / 2: the rebound in the phase of the substep it leaves in (SUBSTEP PHASE) */
+                double b0 = rel_speed(A, B, c->n, p0->cnA, p0->cnB) + c->restitution * p0->relative_velocity + p0->approach_accel * h / 2;
+                double b1 = rel_speed(A, B, c->n, p1->cnA, p1->cnB) + c->restitution * p1->relative_velocity + p1->approach_accel * h / 2;
                 double det = 1 - c->e01 * c->e10, acc0 = p0->ln - (b0 - c->e01 * b1) / det, acc1 = p1->ln - (b1 - c->e10 * b0) / det;
                 if (acc0 >= 0 && acc1 >= 0) {
                     apply(A, B, acc0 - p0->ln, p0->lnA, p0->lnB, p0->gnA, p0->gnB);
@@ -992,7 +1003,7 @@ void ref_step(ref_world *w)
                 spoint *p = &c->p[k];
                 double lambda, acc;
                 if (p->relative_velocity > -d->restitution_threshold || p->max_ln == 0) continue;
-                lambda = -(rel_speed(A, B, c->n, p->cnA, p->cnB) + c->restitution * p->relative_velocity);
+                lambda = -(rel_speed(A, B, c->n, p->cnA, p->cnB) + c->restitution * p->relative_velocity + p->approach_accel * h / 2);
                 acc = p->ln + lambda;
                 if (acc < 0) acc = 0;
                 lambda = acc - p->ln;

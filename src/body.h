@@ -1,0 +1,36 @@
+/* body.h (internal) — what body.c gives the other files: handles, mass, geometry sync
+ * and the speed cap. */
+#ifndef POGON_SRC_BODY_H
+#define POGON_SRC_BODY_H
+#include "geom.h"
+#include "mass.h"
+#include "world_types.h"
+
+pg_body *pg__body(const pg_world *world, pg_body_id id); /* NULL if stale */
+void pg__body_update_mass(pg_world *world, uint32_t body_index);
+/* inv_mass and inv_inertia from mass, inertia, type and fixed rotation: the one rule, for
+ * pg__body_update_mass and for restoring a snapshot (which stores only mass and inertia) */
+void pg__body_set_inverse_mass(pg_body *b);
+/* round(2^(63 + e) / d) for d > 0, 0 <= e <= 31, as pg__div64_shl(2^(25 + e), d, 38) gives it */
+int64_t pg__reciprocal_pow2(int e, int64_t d);
+/* Why mass data cannot be a dynamic body's (its mass, inertia or their inverses leave
+ * their formats), as a message for the user; NULL when it can. `rotates`: the body does
+ * not have fixed rotation (only then is its inverse inertia used). */
+const char *pg__mass_data_problem(pg_mass_data md, int rotates);
+/* The same for body `body_index` with its shapes at `density` (0: each shape's own),
+ * without shape slot `skip` (PG_NULL_INDEX: none), plus `extra` at `extra_density`. */
+const char *pg__body_mass_problem(const pg_world *world, uint32_t body_index, pg_fix density, uint32_t skip,
+                                  const pg_geom *extra, pg_fix extra_density, int rotates);
+void pg__body_sync_geometry(pg_world *world, uint32_t body_index); /* world geoms + boxes */
+/* The documented speed cap: the inline test passes every legal velocity through, the
+ * out-of-line part scales a faster one down and counts it. */
+pg_vec2 pg__clamp_speed_slow(pg_world *world, pg_vec2 v);
+static inline pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v)
+{
+    int64_t cap = world->def.max_linear_speed;
+    /* each square is at most 2^62; their sum (2^63 for INT32_MIN twice) fits unsigned */
+    if ((uint64_t)((int64_t)v.x * v.x) + (uint64_t)((int64_t)v.y * v.y) <= (uint64_t)(cap * cap)) return v;
+    return pg__clamp_speed_slow(world, v);
+}
+
+#endif

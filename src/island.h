@@ -1,0 +1,11 @@
+/* island.h (internal) — sleeping and waking. */
+#ifndef POGON_SRC_ISLAND_H
+#define POGON_SRC_ISLAND_H
+#include "world_types.h"
+
+/* After the solve: bodies at rest long enough fall asleep, island by island. */
+void pg__update_sleep(pg_world *world);
+/* Wake body_index and the island it sleeps in. */
+void pg__wake_body(pg_world *world, uint32_t body_index);
+
+#endif

@@ -1,0 +1,53 @@
+/* world_types.h (internal) — the world as it sits in the caller's memory.
+ *
+ * State that influences the future (and therefore goes into hashes and snapshots):
+ * the body and shape pools (slots in use, generations), every body's motion state and
+ * sleep timer, the contact list (sorted by shape pair) with its manifolds and
+ * accumulated impulses, world settings and the frame counter. Everything else here is
+ * scratch recomputed each step. Every stage of the step includes this; none includes
+ * world.c's header, because world.c is the orchestrator on top (docs/architecture.md).
+ */
+#ifndef POGON_SRC_WORLD_TYPES_H
+#define POGON_SRC_WORLD_TYPES_H
+#include "pogon/pogon.h"
+#include "body_types.h"
+#include "broadphase.h"
+#include "contact_types.h"
+#include "geom.h"
+#include "shape_types.h"
+
+struct pg_world {
+    pg_world_def def;
+    uint64_t frame;
+    pg_body *bodies;
+    pg_shape *shapes;
+    pg_contact *contacts, *contacts_next; /* two buffers, swapped each step */
+    uint32_t contact_count;
+    uint32_t body_high;        /* one past the highest body slot ever used (never shrinks:
+                                  the generations of freed slots are state) */
+    uint32_t shape_high;
+    uint32_t body_count, shape_count;
+    pg_world_stats stats;
+
+    /* scratch, recomputed each step */
+    pg_geom *world_geoms;      /* per shape slot, world frame */
+    pg_aabb *boxes;            /* per shape slot, fattened */
+    uint8_t *proxy_flags;      /* per shape slot: PG_PROXY_ACTIVE when its body moves */
+    pg_aabb *proxy_boxes;      /* compacted: used shapes in slot order */
+    uint8_t *proxy_flags_compact;
+    uint32_t *proxy_shape;     /* proxy -> shape slot */
+    pg_pair *pairs;
+    uint32_t pair_capacity;
+    void *broadphase_scratch;
+    size_t broadphase_scratch_bytes;
+    void *solver_scratch;
+    size_t solver_scratch_bytes;
+    uint32_t *island_parent;   /* per body slot */
+
+    pg_contact_event *begin_events, *end_events;
+    uint32_t begin_count, end_count;
+
+    char last_error[160];
+};
+
+#endif

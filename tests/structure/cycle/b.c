@@ -1,0 +1,3 @@
+#include "a.h"
+#include "b.h"
+int pg_b(int x) { return pg_a(x); }

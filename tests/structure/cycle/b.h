@@ -1,0 +1,1 @@
+int pg_b(int x);

@@ -1,0 +1,2 @@
+int pg_a(int x);
+int pg_a(int x) { return x; }

@@ -1,0 +1,2 @@
+#include "b.h"
+int pg_b(int x) { return pg_a(x); }
