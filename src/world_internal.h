@@ -28,6 +28,7 @@
 #define PG_ENV_MAX_DENSITY PG_FIX_C(100)
 #define PG_ENV_MAX_POSITION PG_FIX_C(1000)
 #define PG_ENV_MAX_FRICTION PG_FIX_C(10)
+#define PG_ENV_MAX_SPIN PG_FIX_C(1000)          /* rad/s, either way */
 
 /* The contact solver's bounds (solver.c derives its int64 arithmetic from them; state.c
  * refuses a snapshot beyond them). Velocities, m/s and rad/s: every component is clamped
@@ -43,7 +44,12 @@ enum {
     PG_BODY_FLAG_AWAKE = 1u << 1,
     PG_BODY_FLAG_FIXED_ROTATION = 1u << 2,
     PG_BODY_FLAG_ALLOW_SLEEP = 1u << 3,
-    PG_BODY_FLAG_GEOMETRY_DIRTY = 1u << 4 /* world geometry must be recomputed */
+    PG_BODY_FLAG_GEOMETRY_DIRTY = 1u << 4, /* world geometry must be recomputed */
+    /* What the last step (or an impulse since) did to the body, for pg_body_limits. Not
+     * state: nothing reads them to decide the future, hashes and snapshots leave them
+     * out, and each step clears them before it sets them again. */
+    PG_BODY_FLAG_SPEED_CLAMPED = 1u << 5,
+    PG_BODY_FLAG_SPIN_CLAMPED = 1u << 6
 };
 
 typedef struct pg_body {
@@ -178,15 +184,26 @@ static inline int pg__body_is_active(const pg_body *b)
            b->type != PG_BODY_STATIC;
 }
 /* The documented speed cap: the inline test passes every legal velocity through, the
- * out-of-line part scales a faster one down and counts it. */
-pg_vec2 pg__clamp_speed_slow(pg_world *world, pg_vec2 v);
-static inline pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v)
+ * out-of-line part scales a faster one down, counts it in stats.speed_clamps and sets
+ * PG_BODY_FLAG_SPEED_CLAMPED in *flags. */
+pg_vec2 pg__clamp_speed_slow(pg_world *world, pg_vec2 v, uint32_t *flags);
+static inline pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v, uint32_t *flags)
 {
     int64_t cap = world->def.max_linear_speed;
     /* each square is at most 2^62; their sum (2^63 for INT32_MIN twice) fits unsigned */
     if ((uint64_t)((int64_t)v.x * v.x) + (uint64_t)((int64_t)v.y * v.y) <= (uint64_t)(cap * cap)) return v;
-    return pg__clamp_speed_slow(world, v);
+    return pg__clamp_speed_slow(world, v, flags);
 }
+/* Within the position envelope (+-PG_ENV_MAX_POSITION on both axes). */
+static inline int pg__in_position_envelope(pg_vec2 p)
+{
+    return p.x >= -PG_ENV_MAX_POSITION && p.x <= PG_ENV_MAX_POSITION && p.y >= -PG_ENV_MAX_POSITION && p.y <= PG_ENV_MAX_POSITION;
+}
+/* Write the velocities a step leaves in a body, within what the setters accept: the
+ * linear one within max_linear_speed, the angular one within +-1000 rad/s (PG_ENV_MAX_SPIN).
+ * The contact solve may exceed both (the solver's own bound is PG_SOLVER_VELOCITY_MAX);
+ * each clamp is counted in the stats and flagged on the body. */
+void pg__body_store_velocity(pg_world *world, pg_body *b, pg_vec2 v, pg_fix w);
 
 /* shape.c */
 void pg__shape_build_local(const pg_geometry *g, pg_geom *out); /* collision form of a geometry */
