@@ -189,7 +189,7 @@ static void print_sections(FILE *out, uint32_t mask)
             any = 1;
         }
     }
-    if (!any) fprintf(out, "(no single section: sections of another engine version?)");
+    if (!any) fprintf(out, "none differs (only the state hash, which the file checked against its section hashes)");
 }
 
 /* ---- a loaded replay ---------------------------------------------------------------- */
