@@ -51,5 +51,12 @@ else()
   set(POGON_PC_LIBDIR "\${prefix}/${CMAKE_INSTALL_LIBDIR}")
   set(POGON_PC_INCLUDEDIR "\${prefix}/${CMAKE_INSTALL_INCLUDEDIR}")
 endif()
+# A shared libpogon: the link line carries its run path, so a program built from
+# `pkg-config --libs pogon` finds libpogon.so.0 without LD_LIBRARY_PATH (docs/install.md).
+if(BUILD_SHARED_LIBS)
+  set(POGON_PC_RPATH " -Wl,-rpath,\${libdir}")
+else()
+  set(POGON_PC_RPATH "")
+endif()
 configure_file("${CMAKE_CURRENT_LIST_DIR}/pogon.pc.in" "${PROJECT_BINARY_DIR}/pogon.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/pogon.pc" DESTINATION "${_pogon_pc_dir}")

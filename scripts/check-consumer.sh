@@ -85,7 +85,14 @@ esac
 # Word splitting of the flag strings is intended here.
 # shellcheck disable=SC2086
 (set -x; "$cc" -std=c99 $cflags $pc_cflags "$consumer/main.c" -o "$tmp/consumer-pc" $ldflags $pc_libs)
-LD_LIBRARY_PATH="$(dirname "$pc")/..${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$tmp/consumer-pc"
+# no LD_LIBRARY_PATH: a shared build's pkg-config line carries the run path
+"$tmp/consumer-pc"
+
+if [ -f "$build/tools/pogon-replay" ] || [ -f "$build/tools/pogon-replay.exe" ]; then
+  step "installed pogon-replay runs from bin/ (no LD_LIBRARY_PATH)"
+  [ -x "$prefix/bin/pogon-replay" ] || fail "pogon-replay was not installed into bin/"
+  "$prefix/bin/pogon-replay" --help >/dev/null || fail "the installed pogon-replay --help failed"
+fi
 
 step "[3/3] add_subdirectory($src)"
 "$cmake" -S "$consumer" -B "$tmp/sub" "$@" -DPOGON_SOURCE_DIR="$src"

@@ -8,6 +8,7 @@
 #include "island.h"
 #include "mass.h"
 #include "reach.h"
+#include "speed_cap.h"
 #include "wide.h"
 
 /* A handle's body, or NULL when the handle is stale or out of range. */
@@ -38,50 +39,17 @@ pg_body_def pg_default_body_def(void)
     return d;
 }
 
-static int in_position_envelope(pg_vec2 p)
-{
-    return p.x >= -PG_ENV_MAX_POSITION && p.x <= PG_ENV_MAX_POSITION && p.y >= -PG_ENV_MAX_POSITION && p.y <= PG_ENV_MAX_POSITION;
-}
-
-/* |v|^2 in Q32, unsigned: for any two int32 components (INT32_MIN too) it is at most
- * 2^63, which a signed sum would overflow. */
-static uint64_t speed_squared(pg_vec2 v)
-{
-    return pg__mag64(v.x) * pg__mag64(v.x) + pg__mag64(v.y) * pg__mag64(v.y);
-}
-
-/* |v| in Q16.16, rounded up, as int64 (up to 2^31.5: it need not fit pg_fix). */
-static int64_t speed_ceil(pg_vec2 v)
-{
-    uint64_t ss = speed_squared(v), r = pg_isqrt64(ss);
-    return (int64_t)(r * r < ss ? r + 1u : r);
-}
+static int in_position_envelope(pg_vec2 p) { return pg__in_position_envelope(p); }
 
 static pg_result check_speed(const pg_world *world, pg_vec2 v)
 {
     uint64_t cap = (uint64_t)world->def.max_linear_speed;
-    if (speed_squared(v) > cap * cap) {
-        int64_t len = speed_ceil(v);
+    if (pg__speed_squared(v) > cap * cap) {
+        int64_t len = pg__speed_ceil(v);
         return pg__fail_limit(world, PG_ERR_ENVELOPE, "linear velocity: speed", len > PG_FIX_MAX ? PG_FIX_MAX : (pg_fix)len,
                               "m/s exceeds the world's max_linear_speed", (pg_fix)cap, "m/s");
     }
     return PG_OK;
-}
-
-/* The speed cap acts on the magnitude: a faster velocity is scaled down to the cap,
- * keeping its direction, and the event is counted in stats.speed_clamps. Each component
- * becomes v cap / |v| with |v| rounded up and the quotient rounded toward zero (the
- * rounding rule for this one place, symmetric in sign): the result never exceeds the
- * cap, so a clamped velocity can be set again, saved in a scene file and read back. */
-pg_vec2 pg__clamp_speed_slow(pg_world *world, pg_vec2 v)
-{
-    uint64_t cap = (uint64_t)world->def.max_linear_speed, len;
-    if (speed_squared(v) <= cap * cap) return v;
-    world->stats.speed_clamps += 1u;
-    len = (uint64_t)speed_ceil(v); /* > cap >= 1 */
-    /* |v.x| cap < 2^31 2^28: no overflow; the quotient is at most cap */
-    return pg_v2((pg_fix)(v.x < 0 ? -(int64_t)(pg__mag64(v.x) * cap / len) : (int64_t)(pg__mag64(v.x) * cap / len)),
-                 (pg_fix)(v.y < 0 ? -(int64_t)(pg__mag64(v.y) * cap / len) : (int64_t)(pg__mag64(v.y) * cap / len)));
 }
 
 static int damping_ok(pg_fix c) { return c >= 0 && c <= PG_FIX_C(1000); }
@@ -365,6 +333,17 @@ int64_t pg_body_inertia(const pg_world *w, pg_body_id id) { const pg_body *b = p
 int pg_body_is_awake(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? (b->flags & PG_BODY_FLAG_AWAKE) != 0 : 0; }
 uint64_t pg_body_user_data(const pg_world *w, pg_body_id id) { const pg_body *b = pg__body(w, id); return b ? b->user_data : 0; }
 
+uint32_t pg_body_limits(const pg_world *w, pg_body_id id)
+{
+    const pg_body *b = pg__body(w, id);
+    uint32_t m = 0;
+    if (b == NULL) return 0;
+    if ((b->flags & PG_BODY_FLAG_SPEED_CLAMPED) != 0) m |= PG_BODY_LIMIT_SPEED_CLAMPED;
+    if ((b->flags & PG_BODY_FLAG_SPIN_CLAMPED) != 0) m |= PG_BODY_LIMIT_SPIN_CLAMPED;
+    if (!pg__in_position_envelope(b->origin)) m |= PG_BODY_LIMIT_OUTSIDE;
+    return m;
+}
+
 uint32_t pg_body_shapes(const pg_world *w, pg_body_id id, pg_shape_id *out, uint32_t capacity)
 {
     const pg_body *b = pg__body(w, id);
@@ -606,13 +585,19 @@ static int64_t add_to_fix(pg_fix a, int64_t b)
     return (int64_t)a + b;
 }
 
-/* w += invI * angular_impulse, within the +-1000 rad/s envelope; no-op for fixed rotation. */
-static void add_angular_impulse(pg_body *b, int64_t impulse)
+/* w += invI * angular_impulse, within the +-1000 rad/s envelope (a clamp is counted in
+ * stats.spin_clamps and flagged); no-op for fixed rotation. */
+static void add_angular_impulse(pg_world *world, pg_body *b, int64_t impulse)
 {
     int64_t w;
     if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return;
     w = add_to_fix(b->w, pg__mul64_shr(impulse, b->inv_inertia, 38));
-    b->w = (pg_fix)(w > PG_FIX_C(1000) ? PG_FIX_C(1000) : w < -PG_FIX_C(1000) ? -PG_FIX_C(1000) : w);
+    if (w > PG_ENV_MAX_SPIN || w < -PG_ENV_MAX_SPIN) {
+        w = w > 0 ? PG_ENV_MAX_SPIN : -PG_ENV_MAX_SPIN;
+        world->stats.spin_clamps += 1u;
+        b->flags |= PG_BODY_FLAG_SPIN_CLAMPED;
+    }
+    b->w = (pg_fix)w;
 }
 
 pg_result pg_body_apply_force_at(pg_world *world, pg_body_id id, pg_vec2 force, pg_vec2 point)
@@ -647,8 +632,9 @@ pg_result pg_body_apply_linear_impulse(pg_world *world, pg_body_id id, pg_vec2 i
     if (r != PG_OK) return r;
     if (!in_position_envelope(point)) return pg__fail(world, PG_ERR_ENVELOPE, "point is outside +-1000 m");
     b->v = pg__clamp_speed(world, pg_v2(pg__sat64(add_to_fix(b->v.x, pg__mul64_shr(impulse.x, b->inv_mass, 38))),
-                                        pg__sat64(add_to_fix(b->v.y, pg__mul64_shr(impulse.y, b->inv_mass, 38)))));
-    add_angular_impulse(b, moment_about_center(b, point, impulse));
+                                        pg__sat64(add_to_fix(b->v.y, pg__mul64_shr(impulse.y, b->inv_mass, 38)))),
+                           &b->flags);
+    add_angular_impulse(world, b, moment_about_center(b, point, impulse));
     pg__wake_body(world, id.index);
     return PG_OK;
 }
@@ -658,7 +644,7 @@ pg_result pg_body_apply_angular_impulse(pg_world *world, pg_body_id id, pg_fix i
     pg_body *b = NULL;
     pg_result r = dynamic_body(world, id, "pg_body_apply_angular_impulse: body handle is stale or invalid", &b);
     if (r != PG_OK) return r;
-    add_angular_impulse(b, impulse);
+    add_angular_impulse(world, b, impulse);
     pg__wake_body(world, id.index);
     return PG_OK;
 }

@@ -4,6 +4,7 @@
 #define POGON_SRC_BODY_H
 #include "geom.h"
 #include "mass.h"
+#include "speed_cap.h"
 #include "world_types.h"
 
 pg_body *pg__body(const pg_world *world, pg_body_id id); /* NULL if stale */
@@ -22,15 +23,5 @@ const char *pg__mass_data_problem(pg_mass_data md, int rotates);
 const char *pg__body_mass_problem(const pg_world *world, uint32_t body_index, pg_fix density, uint32_t skip,
                                   const pg_geom *extra, pg_fix extra_density, int rotates);
 void pg__body_sync_geometry(pg_world *world, uint32_t body_index); /* world geoms + boxes */
-/* The documented speed cap: the inline test passes every legal velocity through, the
- * out-of-line part scales a faster one down and counts it. */
-pg_vec2 pg__clamp_speed_slow(pg_world *world, pg_vec2 v);
-static inline pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v)
-{
-    int64_t cap = world->def.max_linear_speed;
-    /* each square is at most 2^62; their sum (2^63 for INT32_MIN twice) fits unsigned */
-    if ((uint64_t)((int64_t)v.x * v.x) + (uint64_t)((int64_t)v.y * v.y) <= (uint64_t)(cap * cap)) return v;
-    return pg__clamp_speed_slow(world, v);
-}
 
 #endif

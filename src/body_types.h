@@ -11,7 +11,12 @@ enum {
     PG_BODY_FLAG_AWAKE = 1u << 1,
     PG_BODY_FLAG_FIXED_ROTATION = 1u << 2,
     PG_BODY_FLAG_ALLOW_SLEEP = 1u << 3,
-    PG_BODY_FLAG_GEOMETRY_DIRTY = 1u << 4 /* world geometry must be recomputed */
+    PG_BODY_FLAG_GEOMETRY_DIRTY = 1u << 4, /* world geometry must be recomputed */
+    /* What the last step (or an impulse since) did to the body, for pg_body_limits. Not
+     * state: nothing reads them to decide the future, hashes and snapshots leave them
+     * out, and each step clears them before it sets them again. */
+    PG_BODY_FLAG_SPEED_CLAMPED = 1u << 5,
+    PG_BODY_FLAG_SPIN_CLAMPED = 1u << 6
 };
 
 typedef struct pg_body {

@@ -136,6 +136,9 @@ typedef struct bp_out {
     unsigned nb;          /* bits of a proxy index in a key */
     int over;             /* some pair was dropped (more than K exist) */
     uint64_t thr;         /* when over: keys above thr are not among the first K */
+    uint64_t emitted;     /* pairs emitted in all, counted from the first slow emit on
+                             (each pair is emitted once: the dropped ones are emitted - K) */
+    int counting;         /* emitted holds the count */
 } bp_out;
 
 /* Sorts n pair keys (2 nb bits) in as few passes as pay: a pass costs about 8
@@ -174,6 +177,11 @@ static void bp_trim(bp_out *o)
 /* A pair that does not simply go into pk: pk is full, or some were dropped. */
 static void bp_emit_slow(bp_out *o, uint64_t key)
 {
+    if (!o->counting) { /* the fast path emitted o->n pairs so far */
+        o->emitted = o->n;
+        o->counting = 1;
+    }
+    o->emitted += 1u;
     if (o->over && key > o->thr) return;
     if (o->n == o->cap2) {
         if (o->cap2 == 0) { /* K == 0: every key (>= 1, as a != b) is beyond the first 0 */
@@ -515,6 +523,14 @@ int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t cou
                         pg_pair *pairs, uint32_t pair_capacity, uint32_t *pair_count,
                         void *scratch, size_t scratch_bytes)
 {
+    uint64_t dropped;
+    return pg_broadphase_pairs_counted(boxes, flags, count, pairs, pair_capacity, pair_count, &dropped, scratch, scratch_bytes);
+}
+
+int pg_broadphase_pairs_counted(const pg_aabb *boxes, const uint8_t *flags, uint32_t count,
+                                pg_pair *pairs, uint32_t pair_capacity, uint32_t *pair_count, uint64_t *dropped,
+                                void *scratch, size_t scratch_bytes)
+{
     uint64_t sum = 0, mean;
     uint32_t nact = 0, i;
     int have = 0;
@@ -526,6 +542,7 @@ int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t cou
     bp_out out;
 
     *pair_count = 0;
+    *dropped = 0;
     if (count > BP_MAX_PROXIES || scratch_bytes < pg_broadphase_scratch_bytes(count, pair_capacity)) return -2;
 
     /* the mean extent of the active proxies, and the bounds of their boxes */
@@ -628,6 +645,8 @@ int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t cou
     out.nb = bp_bits(count > 1u ? count - 1u : 1u);
     out.over = 0;
     out.thr = 0;
+    out.emitted = 0;
+    out.counting = 0;
 
     if (have) {
         /* A small rectangle is counted cell by cell while the entries are made, in pk and
@@ -682,6 +701,7 @@ int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t cou
             pairs[t].b = (uint32_t)(sorted[t] & mask);
         }
         *pair_count = (uint32_t)n_out;
+        *dropped = (out.counting ? out.emitted : out.n) - n_out;
         return -1;
     }
 }

@@ -62,4 +62,9 @@ size_t pg_broadphase_scratch_bytes(uint32_t max_proxies, uint32_t max_pairs);
 int pg_broadphase_pairs(const pg_aabb *boxes, const uint8_t *flags, uint32_t count,
                         pg_pair *pairs, uint32_t pair_capacity, uint32_t *pair_count,
                         void *scratch, size_t scratch_bytes);
+/* The same, and *dropped receives how many overlapping pairs were left out (0 unless
+ * the call returns -1): every pair is emitted once, so they are counted exactly. */
+int pg_broadphase_pairs_counted(const pg_aabb *boxes, const uint8_t *flags, uint32_t count,
+                                pg_pair *pairs, uint32_t pair_capacity, uint32_t *pair_count, uint64_t *dropped,
+                                void *scratch, size_t scratch_bytes);
 #endif

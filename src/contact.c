@@ -86,6 +86,13 @@ static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact
     }
 }
 
+/* stats.capacity_misses, saturating at UINT32_MAX */
+static void count_misses(pg_world *w, uint64_t n)
+{
+    uint64_t sum = (uint64_t)w->stats.capacity_misses + n;
+    w->stats.capacity_misses = sum > UINT32_MAX ? UINT32_MAX : (uint32_t)sum;
+}
+
 static int body_was_active(const pg_world *w, uint32_t shape) { return (w->proxy_flags[shape] & PG_PROXY_ACTIVE) != 0; }
 
 pg_result pg__update_contacts(pg_world *w)
@@ -94,6 +101,7 @@ pg_result pg__update_contacts(pg_world *w)
     uint64_t okey;
     pg_contact *old = w->contacts, *next = w->contacts_next;
     int overflow;
+    uint64_t dropped;
 
     /* Proxies: the used shape slots in index order, so proxy order == shape order. */
     for (s = 0; s < w->shape_high; ++s) {
@@ -106,9 +114,10 @@ pg_result pg__update_contacts(pg_world *w)
         w->proxy_shape[n_proxies] = s;
         ++n_proxies;
     }
-    overflow = pg_broadphase_pairs(w->proxy_boxes, w->proxy_flags_compact, n_proxies, w->pairs, w->pair_capacity, &n_pairs,
-                                   w->broadphase_scratch, w->broadphase_scratch_bytes);
-    if (overflow != 0) w->stats.capacity_misses += 1u;
+    overflow = pg_broadphase_pairs_counted(w->proxy_boxes, w->proxy_flags_compact, n_proxies, w->pairs, w->pair_capacity,
+                                           &n_pairs, &dropped, w->broadphase_scratch, w->broadphase_scratch_bytes);
+    /* every candidate pair the pair buffer could not hold is a contact that may be missed */
+    if (overflow != 0) count_misses(w, dropped);
     w->stats.pair_count = n_pairs;
 
     /* Merge the old contact list with the new pairs, both sorted by shape pair: each pair
@@ -137,7 +146,7 @@ pg_result pg__update_contacts(pg_world *w)
                     next[out++] = *o;
                     kept = 1;
                 } else {
-                    w->stats.capacity_misses += 1u;
+                    count_misses(w, 1u);
                 }
             }
             if (!kept) pg__push_end_event(w, o);
@@ -150,7 +159,7 @@ pg_result pg__update_contacts(pg_world *w)
             okey = i < n_old ? pair_key(old[i].shape_a, old[i].shape_b) : UINT64_MAX;
         }
         if (out >= w->def.max_contacts) {
-            w->stats.capacity_misses += 1u;
+            count_misses(w, 1u);
             if (prev != NULL) pg__push_end_event(w, prev);
             continue;
         }

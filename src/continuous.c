@@ -63,6 +63,7 @@
 #include "continuous.h"
 #include "envelope.h"
 #include "wide.h"
+#include "speed_cap.h"
 #include "world_types.h"
 
 #define PG__TOI_TARGET PG_LINEAR_SLOP
@@ -336,7 +337,8 @@ void pg__sweep_fast_turns(pg_world *w, pg_sweep *sweeps, uint32_t n, uint32_t *s
             dc = without_approach(dc, hold);
             sw->c1 = pg_v2(pg__sat64((int64_t)sw->c0.x + dc.x), pg__sat64((int64_t)sw->c0.y + dc.y));
             sw->moved = 1;
-            b->v = without_approach(b->v, hold);
+            /* a projection cannot lengthen v, but its rounding might by a step: keep the cap */
+            b->v = pg__clamp_speed(w, without_approach(b->v, hold), &b->flags);
         } else if (t < sweeps[k].fraction) {
             sweeps[k].fraction = (pg_fix)t;
         }

@@ -26,6 +26,7 @@
 #define PG_ENV_MAX_DENSITY PG_FIX_C(100)
 #define PG_ENV_MAX_POSITION PG_FIX_C(1000)
 #define PG_ENV_MAX_FRICTION PG_FIX_C(10)
+#define PG_ENV_MAX_SPIN PG_FIX_C(1000)          /* rad/s, either way */
 
 /* The contact solver's bounds (contact_solver.c derives its int64 arithmetic from them;
  * state.c refuses a snapshot beyond them). Velocities, m/s and rad/s: every component is

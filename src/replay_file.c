@@ -60,6 +60,12 @@ static msg set_error(pg_replay_error *e, size_t offset, const char *region, cons
     return m;
 }
 
+/* pg_world_hash's rule: FNV-1a of the section hashes as stored (u64 little-endian). */
+static uint64_t hash_of_sections(const uint8_t *sections, uint32_t count)
+{
+    return pg_hash_bytes(PG_HASH_SEED, sections, (size_t)count * 8u);
+}
+
 static void clear_error(pg_replay_error *e)
 {
     if (e != NULL) {
@@ -200,6 +206,11 @@ pg_result pg_replay_writer_add_checkpoint(pg_replay_writer *w, uint64_t hash, co
     unsigned s;
     if (w == NULL || w->buffer == NULL || sections == NULL) return PG_ERR_NULL;
     if (!pg_replay_writer_checkpoint_due(w)) return PG_ERR_INVALID_ARGUMENT;
+    {   /* the state hash must be the hash of the section hashes, as the reader checks */
+        uint8_t le[8 * PG_SECTION_COUNT];
+        for (s = 0; s < PG_SECTION_COUNT; ++s) put_u64(le + 8u * s, sections[s]);
+        if (hash != hash_of_sections(le, PG_SECTION_COUNT)) return PG_ERR_INVALID_ARGUMENT;
+    }
     if (w->capacity - w->size < need) return PG_ERR_MEMORY;
     pos = w->size;
     w->buffer[pos] = (uint8_t)PG_REPLAY_TAG_CHECKPOINT;
@@ -413,6 +424,14 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
                 pg__text_hex(&m, computed);
                 return PG_ERR_INVALID_ARGUMENT;
             }
+            /* the state hash is the hash of the section hashes (pg_world_hash): a
+             * checkpoint where it is not was altered, whatever engine wrote it */
+            stored = get_u64(data + pos + 5u);
+            computed = hash_of_sections(data + pos + 13u, sections);
+            if (stored != computed)
+                return hash_error(error, pos + 5u, "checkpoint", "hash", (int64_t)frame,
+                                  "checkpoint state hash is not the hash of its section hashes (the checkpoint was altered)",
+                                  stored, computed);
             pos += cs;
             block_start = pos;
             checkpoints++;
@@ -565,7 +584,7 @@ static int compare_at(const pg_world *world, const uint8_t *data, const pg_repla
     if (expected != NULL) *expected = want;
     if (actual != NULL) *actual = have;
     if (mismatch != NULL) *mismatch = mask;
-    return want == have;
+    return want == have && mask == 0; /* everything the checkpoint stores */
 }
 
 int pg_replay_compare_checkpoint(const pg_world *world, const uint8_t *data, const pg_replay_info *info, uint32_t index,

@@ -287,11 +287,47 @@ pg_result pg__validate_geometry(const pg_geometry *g)
     return r;
 }
 
+/* Put a shape, checked by the caller, into free slot i and onto body b's list. The
+ * caller updates the body's mass, geometry and sleep. */
+static void attach_shape(pg_world *world, uint32_t body, uint32_t i, const pg_shape_def *def, const pg_geometry *geometry)
+{
+    pg_body *b = &world->bodies[body];
+    pg_shape *s;
+    uint32_t *link;
+    s = &world->shapes[i];
+    {
+        uint32_t generation = s->generation + 1u;
+        s->generation = generation == 0 ? 1u : generation;
+    }
+    s->used = 1;
+    s->body = body;
+    s->next = PG_NULL_INDEX;
+    s->geometry = *geometry;
+    {
+        int32_t k; /* unused vertex slots are not state: stored as zero */
+        for (k = geometry->count; k < PG_MAX_POLYGON_VERTICES; ++k) s->geometry.vertices[k] = pg_v2_zero();
+    }
+    pg__shape_build_local(geometry, &s->local);
+    pg__shape_set_extents(s);
+    s->density = def->density;
+    s->friction = def->friction;
+    s->restitution = def->restitution;
+    s->category = def->category;
+    s->mask = def->mask;
+    /* append: shapes stay in creation order */
+    for (link = &b->first_shape; *link != PG_NULL_INDEX; link = &world->shapes[*link].next) {}
+    *link = i;
+    b->shape_count += 1u;
+    b->flags |= PG_BODY_FLAG_GEOMETRY_DIRTY;
+    if (i >= world->shape_high) world->shape_high = i + 1u;
+    world->shape_count += 1u;
+}
+
 pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *def, const pg_geometry *geometry, pg_shape_id *out)
 {
     pg_body *b = pg__body(world, body);
     pg_shape *s;
-    uint32_t i, *link;
+    uint32_t i;
     pg_result r;
     const char *why;
     if (out != NULL) out->index = 0, out->generation = 0;
@@ -314,33 +350,8 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     for (i = 0; i < world->def.max_shapes; ++i)
         if (!world->shapes[i].used) break;
     if (i == world->def.max_shapes) return pg__fail(world, PG_ERR_CAPACITY, "max_shapes reached");
+    attach_shape(world, body.index, i, def, geometry);
     s = &world->shapes[i];
-    {
-        uint32_t generation = s->generation + 1u;
-        s->generation = generation == 0 ? 1u : generation;
-    }
-    s->used = 1;
-    s->body = body.index;
-    s->next = PG_NULL_INDEX;
-    s->geometry = *geometry;
-    {
-        int32_t k; /* unused vertex slots are not state: stored as zero */
-        for (k = geometry->count; k < PG_MAX_POLYGON_VERTICES; ++k) s->geometry.vertices[k] = pg_v2_zero();
-    }
-    pg__shape_build_local(geometry, &s->local);
-    pg__shape_set_extents(s);
-    s->density = def->density;
-    s->friction = def->friction;
-    s->restitution = def->restitution;
-    s->category = def->category;
-    s->mask = def->mask;
-    /* append: shapes stay in creation order */
-    for (link = &b->first_shape; *link != PG_NULL_INDEX; link = &world->shapes[*link].next) {}
-    *link = i;
-    b->shape_count += 1u;
-    b->flags |= PG_BODY_FLAG_GEOMETRY_DIRTY;
-    if (i >= world->shape_high) world->shape_high = i + 1u;
-    world->shape_count += 1u;
     pg__body_update_mass(world, body.index);
     pg__body_sync_geometry(world, body.index);
     pg__wake_body(world, body.index);
@@ -400,7 +411,6 @@ pg_result pg_shape_geometry(const pg_world *world, pg_shape_id id, pg_geometry *
 static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, const pg_geometry *g, int n, pg_body_id *out)
 {
     pg_body_id id;
-    pg_shape_id sid;
     pg_result r;
     const char *why;
     int i;
@@ -434,15 +444,21 @@ static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_de
             if (why != NULL) return pg__fail(w, PG_ERR_ENVELOPE, why);
         }
     }
+    /* Everything is checked: the body and its shapes are made without further checks.
+     * (Made shape by shape through pg_shape_create, a star whose first triangle alone is
+     * below the inertia limit failed after its body was made, and undoing that left the
+     * pools' generations moved on.) pg_body_create checks the body def before it changes
+     * anything; the free slots were counted above. */
     r = pg_body_create(w, bd, &id);
     if (r != PG_OK) return r;
     for (i = 0; i < n; ++i) {
-        r = pg_shape_create(w, id, sd, &g[i], &sid);
-        if (r != PG_OK) {
-            (void)pg_body_destroy(w, id); /* all or nothing */
-            return r;
-        }
+        uint32_t slot = 0;
+        while (w->shapes[slot].used) ++slot;
+        attach_shape(w, id.index, slot, sd, &g[i]);
     }
+    pg__body_update_mass(w, id.index);
+    pg__body_sync_geometry(w, id.index);
+    pg__wake_body(w, id.index);
     *out = id;
     return PG_OK;
 }

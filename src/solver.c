@@ -107,7 +107,7 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
                 vx = (int64_t)sb->v.x + whole * sb->accel.x + pg__round_shift64(sb->accel.x * t1, 32) - pg__round_shift64(sb->accel.x * t0, 32);
                 vy = (int64_t)sb->v.y + whole * sb->accel.y + pg__round_shift64(sb->accel.y * t1, 32) - pg__round_shift64(sb->accel.y * t0, 32);
             }
-            sb->v = pg__clamp_speed(w, pg_v2(pg__sat64(vx), pg__sat64(vy)));
+            sb->v = pg__clamp_speed(w, pg_v2(pg__sat64(vx), pg__sat64(vy)), &w->bodies[active[i]].flags);
         }
         if (sb->lin_damp != PG_ROT_ONE) {
             sb->v.x = pg__mul_q30(sb->v.x, sb->lin_damp);
@@ -263,14 +263,16 @@ void pg__solve(pg_world *w)
         pg_body *b = &w->bodies[active[i]];
         const solver_body *sb = &bodies[active[i]];
         pg_fix w0 = b->w;
-        b->v = sb->v;
-        if (rotation) b->w = sb->w; /* rotation off pauses spin; it does not erase it */
+        int was_inside = pg__in_position_envelope(b->origin);
+        /* the contact solve may have left a velocity past the caps: clamp it (counted) */
+        pg__body_store_velocity(w, b, sb->v, rotation ? sb->w : b->w); /* rotation off pauses spin */
         b->center = sb->c;
         if (b->angle != sb->a) {
             b->angle = sb->a;
             b->rot = pg_rot_from_angle(sb->a);
         }
         b->origin = pg_v2_sub(b->center, pg_rot_apply(b->rot, b->local_center));
+        if (was_inside && !pg__in_position_envelope(b->origin)) w->stats.envelope_exits += 1u;
         b->force_x = b->force_y = b->torque = 0;
         if (sweeping && b->turn_reach != 0 && (sb->turn != 0 || w0 != 0) && b->type == PG_BODY_DYNAMIC) {
             pg_sweep *s = &sweeps[n_fast];

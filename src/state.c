@@ -8,7 +8,11 @@
  *
  * Layout (docs/formats.md, "Snapshots"):
  *   "PGSN" u16 version u32 max_bodies u32 max_shapes u32 max_contacts
- *   then for each section s in order: u8 s, u32 byte length, the section's bytes.
+ *   then for each section s in order: u8 s, u32 byte length, the section's bytes, u64
+ *   the section's hash (FNV-1a of its bytes, as pg_world_section_hashes gives it);
+ *   then u64 checksum, FNV-1a of every byte before it. Restoring checks the checksum
+ *   (and names the section whose hash fails) before it reads a value, then validates
+ *   the structure, then writes the world.
  * Derived data is not stored: a body's origin and rotation come from its centre and
  * angle, a shape's collision form from its geometry, every cached world geometry is
  * recomputed at the next step.
@@ -19,8 +23,9 @@
 #include "world_internal.h"
 
 #define SNAPSHOT_MAGIC 0x4E534750u /* "PGSN" */
-#define SNAPSHOT_VERSION 3u /* 2: inverse mass and inertia are derived, not stored; 3: a
-                              contact point's push_impulse */
+#define SNAPSHOT_VERSION 4u /* 2: inverse mass and inertia are derived, not stored; 3: a
+                              contact point's push_impulse; 4: section hashes and a checksum */
+#define SNAPSHOT_HEADER_SIZE 18u /* magic, version, three capacities */
 
 /* What a world can hold, from the code that writes each value. Restoring refuses a
  * value beyond these: only corruption makes one, and the step's arithmetic relies on
@@ -283,11 +288,16 @@ static void encode_all(const pg_world *w, sink *s)
         length_at = s->len;
         emit_u32(s, 0); /* patched below */
         start = s->len;
+        s->hash = PG_HASH_SEED;
         encode_section(w, (pg_section)k, s);
         length = s->len - start;
         if (s->buf != NULL && !s->overflow)
             for (i = 0; i < 4; ++i) s->buf[length_at + i] = (uint8_t)((length >> (8 * i)) & 0xFFu);
+        emit_u64(s, s->hash); /* the section's hash: pg_world_section_hashes()[k] */
     }
+    /* the checksum: FNV-1a of every byte before it. Each step of FNV-1a is a bijection of
+     * its state, so any change of one byte (any number of its bits) changes it. */
+    emit_u64(s, s->buf != NULL && !s->overflow ? pg_hash_bytes(PG_HASH_SEED, s->buf, s->len) : 0u);
 }
 
 size_t pg_world_snapshot_size(const pg_world *world)
@@ -390,11 +400,382 @@ static int normal_ok(pg_dir n, int32_t point_count)
     return q >= UNIT_Q60 - UNIT_TOLERANCE_Q60 && q <= UNIT_Q60 + UNIT_TOLERANCE_Q60;
 }
 
-/* Parse (and with `w` non-NULL, apply) one snapshot. Applying assumes a validated input. */
+/* The decoders of the sections, one per section as the encoders are. Each reads the
+ * section that starts at `start` (after its id and length) and, with `w` non-NULL,
+ * applies it; applying assumes a validated input. */
+
+static void decode_settings(source *r, pg_world *w, const pg_world_def *caps, size_t start, size_t length)
+{
+    (void)length;
+    pg_world_def d = *caps;
+    uint64_t frame;
+    d.gravity = take_vec(r, "settings.gravity");
+    d.step_hz = take_u32(r, "settings.step_hz");
+    d.substeps = take_u32(r, "settings.substeps");
+    d.effects = take_u32(r, "settings.effects");
+    d.contact_hertz = take_i32(r, "settings.contact_hertz");
+    d.contact_damping_ratio = take_i32(r, "settings.contact_damping_ratio");
+    d.contact_push_max = take_i32(r, "settings.contact_push_max");
+    d.restitution_threshold = take_i32(r, "settings.restitution_threshold");
+    d.max_linear_speed = take_i32(r, "settings.max_linear_speed");
+    d.sleep_linear_tolerance = take_i32(r, "settings.sleep_linear_tolerance");
+    d.sleep_angular_tolerance = take_i32(r, "settings.sleep_angular_tolerance");
+    d.time_to_sleep = take_i32(r, "settings.time_to_sleep");
+    frame = take_u64(r, "settings.frame");
+    if (r->error_field == NULL && pg_world_memory_size(&d) == 0) invalid(r, start, "settings (a value is out of range)");
+    if (w != NULL) {
+        w->def = d;
+        w->frame = frame;
+    }
+}
+
+static void decode_bodies(source *r, pg_world *w, const pg_world_def *caps, size_t start, size_t length)
+{
+    uint32_t i, n;
+    size_t at;
+    (void)length;
+    at = r->pos;
+    n = take_u32(r, "bodies.count");
+    if (n > caps->max_bodies) invalid(r, at, "bodies.count");
+    r->n_bodies = n <= caps->max_bodies ? n : 0u;
+    for (i = 0; i < n && r->error_field == NULL; ++i) {
+        pg_body b;
+        uint32_t used, m, flags;
+        unsigned char *p = (unsigned char *)&b;
+        size_t z;
+        for (z = 0; z < sizeof b; ++z) p[z] = 0;
+        b.generation = take_u32(r, "body.generation");
+        at = r->pos;
+        used = take(r, "body.used");
+        if (used > 1u) invalid(r, at, "body.used");
+        b.first_shape = PG_NULL_INDEX;
+        b.island = PG_NULL_INDEX;
+        b.gravity_scale = PG_FIX_ONE;
+        if (used) {
+            size_t presence_at = r->pos;
+            m = take_u32(r, "body.presence");
+            if (m >= (B_MASS << 1)) invalid(r, presence_at, "body.presence");
+            at = r->pos;
+            b.type = (pg_body_type)take(r, "body.type");
+            if ((unsigned)b.type > (unsigned)PG_BODY_DYNAMIC) invalid(r, at, "body.type");
+            if (r->error_field == NULL && ((m & B_MASS) != 0) != (b.type == PG_BODY_DYNAMIC)) invalid(r, at, "body.type (mass data)");
+            at = r->pos;
+            flags = take(r, "body.flags");
+            if ((flags & ~(uint32_t)(PG_BODY_FLAG_AWAKE | PG_BODY_FLAG_FIXED_ROTATION | PG_BODY_FLAG_ALLOW_SLEEP)) != 0) invalid(r, at, "body.flags");
+            b.flags = flags | PG_BODY_FLAG_USED | PG_BODY_FLAG_GEOMETRY_DIRTY;
+            b.center = take_vec(r, "body.center");
+            b.angle = take_u32(r, "body.angle");
+            at = r->pos;
+            b.first_shape = take_u32(r, "body.first_shape");
+            if (b.first_shape != PG_NULL_INDEX && b.first_shape >= caps->max_shapes) invalid(r, at, "body.first_shape");
+            b.shape_count = take_u32(r, "body.shape_count");
+            /* every value within what a world can hold (the LIMIT_* above) */
+            if (m & B_VELOCITY) {
+                at = r->pos;
+                b.v = take_vec(r, "body.velocity");
+                if (!within(b.v.x, LIMIT_VELOCITY) || !within(b.v.y, LIMIT_VELOCITY))
+                    invalid(r, at, "body.velocity (a component beyond 8192 m/s)");
+                else if (b.type == PG_BODY_STATIC) invalid(r, at, "body.velocity (a static body does not move)");
+            }
+            if (m & B_ANGULAR) {
+                at = r->pos;
+                b.w = take_i32(r, "body.angular_velocity");
+                if (!within(b.w, LIMIT_VELOCITY)) invalid(r, at, "body.angular_velocity (beyond 8192 rad/s)");
+                else if (b.type == PG_BODY_STATIC) invalid(r, at, "body.angular_velocity (a static body does not move)");
+                else if ((flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) invalid(r, at, "body.angular_velocity (the body has fixed rotation)");
+            }
+            if (m & B_FORCES) {
+                at = r->pos;
+                b.force_x = take_i64(r, "body.force");
+                b.force_y = take_i64(r, "body.force");
+                if (!within64(b.force_x, LIMIT_FORCE) || !within64(b.force_y, LIMIT_FORCE))
+                    invalid(r, at, "body.force (a component beyond 2^60, the accumulator's clamp)");
+                at = r->pos;
+                b.torque = take_i64(r, "body.torque");
+                if (!within64(b.torque, LIMIT_FORCE)) invalid(r, at, "body.torque (beyond 2^60, the accumulator's clamp)");
+            }
+            if (m & B_DAMPING) {
+                at = r->pos;
+                b.linear_damping = take_i32(r, "body.linear_damping");
+                if (b.linear_damping < 0 || b.linear_damping > LIMIT_DAMPING) invalid(r, at, "body.linear_damping (outside 0..1000)");
+                at = r->pos;
+                b.angular_damping = take_i32(r, "body.angular_damping");
+                if (b.angular_damping < 0 || b.angular_damping > LIMIT_DAMPING) invalid(r, at, "body.angular_damping (outside 0..1000)");
+            }
+            if (m & B_GRAVITY_SCALE) {
+                at = r->pos;
+                b.gravity_scale = take_i32(r, "body.gravity_scale");
+                if (!within(b.gravity_scale, LIMIT_GRAVITY_SCALE)) invalid(r, at, "body.gravity_scale (outside -100..100)");
+            }
+            if (m & B_USER) b.user_data = take_u64(r, "body.user_data");
+            if (m & B_SLEEP_TIME) {
+                at = r->pos;
+                b.sleep_time = take_i32(r, "body.sleep_time");
+                if (b.sleep_time < 0 || b.sleep_time > LIMIT_SLEEP_TIME) invalid(r, at, "body.sleep_time (outside 0..1001 s)");
+            }
+            if (m & B_ISLAND) {
+                at = r->pos;
+                b.island = take_u32(r, "body.island");
+                if (b.island >= caps->max_bodies) invalid(r, at, "body.island");
+            }
+            if (m & B_MASS) {
+                at = r->pos;
+                b.local_center = take_vec(r, "body.local_center");
+                if (!within(b.local_center.x, LIMIT_LOCAL_CENTER) || !within(b.local_center.y, LIMIT_LOCAL_CENTER))
+                    invalid(r, at, "body.local_center (beyond the 50 m its shapes may reach)");
+                at = r->pos;
+                b.mass = take_i64(r, "body.mass");
+                if (b.mass <= 0) invalid(r, at, "body.mass (a dynamic body's mass is positive)");
+                at = r->pos;
+                b.inertia = take_i64(r, "body.inertia");
+                if (b.inertia < 0) invalid(r, at, "body.inertia (negative)");
+                else if (r->error_field == NULL) {
+                    /* what a world refuses to create, a snapshot may not hold */
+                    pg_mass_data md;
+                    md.mass = b.mass;
+                    md.inertia = b.inertia;
+                    md.center = b.local_center;
+                    if (pg__mass_data_problem(md, (flags & PG_BODY_FLAG_FIXED_ROTATION) == 0) != NULL)
+                        invalid(r, at, "body.mass or body.inertia (outside the envelope: its inverse leaves Q25.38)");
+                }
+            }
+            pg__body_set_inverse_mass(&b);
+            /* one encoding per state: a present optional field is not its default */
+            if (((m & B_VELOCITY) && b.v.x == 0 && b.v.y == 0) || ((m & B_ANGULAR) && b.w == 0) ||
+                ((m & B_FORCES) && b.force_x == 0 && b.force_y == 0 && b.torque == 0) ||
+                ((m & B_DAMPING) && b.linear_damping == 0 && b.angular_damping == 0) ||
+                ((m & B_GRAVITY_SCALE) && b.gravity_scale == PG_FIX_ONE) || ((m & B_USER) && b.user_data == 0) ||
+                ((m & B_SLEEP_TIME) && b.sleep_time == 0) || ((m & B_ISLAND) && b.island == PG_NULL_INDEX))
+                invalid(r, presence_at, "body.presence (a present field holds its default)");
+            b.rot = pg_rot_from_angle(b.angle);
+            b.origin = pg_v2_sub(b.center, pg_rot_apply(b.rot, b.local_center));
+        }
+        if (r->body_info != NULL) {
+            r->body_info[5u * i] = used ? 1u + (uint32_t)b.type : 0u;
+            r->body_info[5u * i + 1u] = used ? b.first_shape : PG_NULL_INDEX;
+            r->body_info[5u * i + 2u] = b.shape_count;
+            r->body_info[5u * i + 3u] = used ? (uint32_t)pg__body_is_active(&b) : 0u;
+            r->body_info[5u * i + 4u] = used ? b.island : PG_NULL_INDEX;
+        }
+        if (w != NULL) w->bodies[i] = b;
+    }
+    if (r->body_info != NULL) { /* islands name used bodies */
+        for (i = 0; i < n && r->error_field == NULL; ++i) {
+            uint32_t island = r->body_info[5u * i + 4u];
+            if (r->body_info[5u * i] && island != PG_NULL_INDEX && (island >= n || !r->body_info[5u * island]))
+                invalid(r, start, "body.island (not a used body)");
+        }
+    }
+    if (w != NULL) {
+        for (i = n; i < w->def.max_bodies; ++i) { /* slots never used */
+            w->bodies[i].flags = 0;
+            w->bodies[i].generation = 0;
+        }
+        w->body_high = n;
+    }
+}
+
+static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size_t start, size_t length)
+{
+    uint32_t i, n;
+    size_t at;
+    (void)length;
+    at = r->pos;
+    n = take_u32(r, "shapes.count");
+    if (n > caps->max_shapes) invalid(r, at, "shapes.count");
+    r->n_shapes = n <= caps->max_shapes ? n : 0u;
+    for (i = 0; i < n && r->error_field == NULL; ++i) {
+        pg_shape sh;
+        uint32_t used;
+        int32_t v;
+        unsigned char *p = (unsigned char *)&sh;
+        size_t z;
+        for (z = 0; z < sizeof sh; ++z) p[z] = 0;
+        sh.generation = take_u32(r, "shape.generation");
+        at = r->pos;
+        used = take(r, "shape.used");
+        if (used > 1u) invalid(r, at, "shape.used");
+        sh.used = used;
+        sh.next = PG_NULL_INDEX;
+        if (used) {
+            at = r->pos;
+            sh.body = take_u32(r, "shape.body");
+            if (sh.body >= caps->max_bodies) invalid(r, at, "shape.body");
+            at = r->pos;
+            sh.next = take_u32(r, "shape.next");
+            if (sh.next != PG_NULL_INDEX && sh.next >= caps->max_shapes) invalid(r, at, "shape.next");
+            at = r->pos;
+            sh.geometry.kind = (pg_shape_kind)take(r, "shape.kind");
+            if ((unsigned)sh.geometry.kind > (unsigned)PG_SHAPE_POLYGON) invalid(r, at, "shape.kind");
+            at = r->pos;
+            sh.geometry.count = (int32_t)take(r, "shape.vertex_count");
+            if (sh.geometry.count < 1 || sh.geometry.count > PG_MAX_VERTICES) invalid(r, at, "shape.vertex_count");
+            for (v = 0; v < sh.geometry.count && r->error_field == NULL; ++v) sh.geometry.vertices[v] = take_vec(r, "shape.vertex");
+            sh.geometry.radius = take_i32(r, "shape.radius");
+            sh.density = take_i32(r, "shape.density");
+            sh.friction = take_i32(r, "shape.friction");
+            sh.restitution = take_i32(r, "shape.restitution");
+            sh.category = take_u32(r, "shape.category");
+            sh.mask = take_u32(r, "shape.mask");
+            if (r->error_field == NULL && pg__validate_geometry(&sh.geometry) != PG_OK) invalid(r, at, "shape.geometry");
+            /* a moving body's shapes reach less far than a static one's (validation pass:
+             * the bodies, read before the shapes, are in body_info) */
+            if (r->error_field == NULL && r->body_info != NULL && sh.body < r->n_bodies && r->body_info[5u * sh.body] != 0u &&
+                pg__geometry_reach(&sh.geometry) > pg__body_reach_limit((pg_body_type)(r->body_info[5u * sh.body] - 1u)))
+                invalid(r, at, "shape.geometry (reaches farther from its body's origin than the body's type allows)");
+            if (sh.density < 0 || sh.density > PG_FIX_C(100) || sh.friction < 0 || sh.friction > PG_FIX_C(10) ||
+                sh.restitution < 0 || sh.restitution > PG_FIX_ONE)
+                invalid(r, at, "shape.material");
+            if (w != NULL && r->error_field == NULL) {
+                pg__shape_build_local(&sh.geometry, &sh.local);
+                pg__shape_set_extents(&sh); /* derived, like local: not stored */
+            }
+        }
+        if (r->shape_owner != NULL) {
+            r->shape_owner[i] = used ? sh.body : PG_NULL_INDEX;
+            r->shape_next[i] = sh.next;
+            r->shape_mark[i] = 0;
+        }
+        if (w != NULL) w->shapes[i] = sh;
+    }
+    if (r->shape_owner != NULL && r->error_field == NULL) {
+        /* every used body's list holds exactly its shape_count shapes, each owned
+         * by it and met once; every used shape is on its owner's list */
+        uint32_t b;
+        for (b = 0; b < r->n_bodies && r->error_field == NULL; ++b) {
+            uint32_t sidx = r->body_info[5u * b + 1u], k2;
+            if (!r->body_info[5u * b]) continue;
+            for (k2 = 0; k2 < r->body_info[5u * b + 2u]; ++k2) {
+                if (sidx >= n || r->shape_owner[sidx] != b || r->shape_mark[sidx]) { invalid(r, start, "shape lists (body.first_shape, shape.next, shape.body)"); break; }
+                r->shape_mark[sidx] = 1;
+                sidx = r->shape_next[sidx];
+            }
+            if (r->error_field == NULL && sidx != PG_NULL_INDEX) invalid(r, start, "shape lists (body.shape_count)");
+        }
+        for (i = 0; i < n && r->error_field == NULL; ++i) /* owners are used bodies */
+            if (r->shape_owner[i] != PG_NULL_INDEX && (r->shape_owner[i] >= r->n_bodies || !r->body_info[5u * r->shape_owner[i]]))
+                invalid(r, start, "shape.body (not a used body)");
+        for (i = 0; i < n && r->error_field == NULL; ++i)
+            if (r->shape_owner[i] != PG_NULL_INDEX && !r->shape_mark[i]) invalid(r, start, "shape lists (a shape is on no list)");
+    }
+    if (w != NULL) {
+        uint32_t count = 0;
+        for (i = n; i < w->def.max_shapes; ++i) {
+            w->shapes[i].used = 0;
+            w->shapes[i].generation = 0;
+        }
+        w->shape_high = n;
+        for (i = 0; i < n; ++i) count += w->shapes[i].used ? 1u : 0u;
+        w->shape_count = count;
+        /* derived from the shapes and the bodies' centres of mass: not stored */
+        for (i = 0; i < w->body_high; ++i)
+            if ((w->bodies[i].flags & PG_BODY_FLAG_USED) != 0) pg__body_set_turn_extents(w, i);
+    }
+}
+
+static void decode_contacts(source *r, pg_world *w, const pg_world_def *caps, size_t start, size_t length)
+{
+    uint32_t i, n;
+    size_t at;
+    (void)start;
+    (void)length;
+    uint32_t prev_a = 0, prev_b = 0;
+    at = r->pos;
+    n = take_u32(r, "contacts.count");
+    if (n > caps->max_contacts) invalid(r, at, "contacts.count");
+    for (i = 0; i < n && r->error_field == NULL; ++i) {
+        pg_contact c;
+        int32_t q;
+        size_t normal_at;
+        unsigned char *p = (unsigned char *)&c;
+        size_t z;
+        for (z = 0; z < sizeof c; ++z) p[z] = 0;
+        at = r->pos;
+        c.shape_a = take_u32(r, "contact.shape_a");
+        c.shape_b = take_u32(r, "contact.shape_b");
+        if (c.shape_a >= caps->max_shapes || c.shape_b >= caps->max_shapes || c.shape_a >= c.shape_b) invalid(r, at, "contact.shapes");
+        if (r->shape_owner != NULL && r->error_field == NULL) {
+            if (c.shape_b >= r->n_shapes || r->shape_owner[c.shape_a] == PG_NULL_INDEX || r->shape_owner[c.shape_b] == PG_NULL_INDEX)
+                invalid(r, at, "contact.shapes (unused shape)");
+            else if (i > 0 && (c.shape_a < prev_a || (c.shape_a == prev_a && c.shape_b <= prev_b)))
+                invalid(r, at, "contact.shapes (not in order)");
+            prev_a = c.shape_a;
+            prev_b = c.shape_b;
+        }
+        at = r->pos;
+        c.body_a = take_u32(r, "contact.body_a");
+        c.body_b = take_u32(r, "contact.body_b");
+        if (c.body_a >= caps->max_bodies || c.body_b >= caps->max_bodies) invalid(r, at, "contact.bodies");
+        if (r->shape_owner != NULL && r->error_field == NULL &&
+            (c.body_a != r->shape_owner[c.shape_a] || c.body_b != r->shape_owner[c.shape_b]))
+            invalid(r, at, "contact.bodies (not the shapes' owners)");
+        normal_at = r->pos;
+        c.normal.x = take_i32(r, "contact.normal");
+        c.normal.y = take_i32(r, "contact.normal");
+        /* a mix of two shapes' materials (contact.c): friction sqrt(fa fb) <= 10,
+         * restitution max(ra, rb) <= 1 */
+        at = r->pos;
+        c.friction = take_i32(r, "contact.friction");
+        if (c.friction < 0 || c.friction > PG_ENV_MAX_FRICTION) invalid(r, at, "contact.friction (outside 0..10)");
+        at = r->pos;
+        c.restitution = take_i32(r, "contact.restitution");
+        if (c.restitution < 0 || c.restitution > PG_FIX_ONE) invalid(r, at, "contact.restitution (outside 0..1)");
+        at = r->pos;
+        c.point_count = (int32_t)take(r, "contact.point_count");
+        if (c.point_count > 2) invalid(r, at, "contact.point_count");
+        else if (r->error_field == NULL && !normal_ok(c.normal, c.point_count)) invalid(r, normal_at, "contact.normal (not a unit vector)");
+        for (q = 0; q < c.point_count && r->error_field == NULL; ++q) {
+            pg_contact_point *cp = &c.points[q];
+            cp->point = take_vec(r, "contact.point");
+            at = r->pos;
+            cp->separation = take_i32(r, "contact.separation");
+            if (cp->separation < -LIMIT_PENETRATION) invalid(r, at, "contact.separation (deeper than two shapes can overlap)");
+            cp->id = take_u32(r, "contact.id");
+            /* the solver keeps the accumulated impulses within its LAMBDA_MAX */
+            at = r->pos;
+            cp->normal_impulse = take_i32(r, "contact.normal_impulse");
+            if (cp->normal_impulse < 0 || cp->normal_impulse > LIMIT_LAMBDA) invalid(r, at, "contact.normal_impulse (outside 0..2^29)");
+            at = r->pos;
+            cp->tangent_impulse = take_i32(r, "contact.tangent_impulse");
+            if (!within(cp->tangent_impulse, LIMIT_LAMBDA)) invalid(r, at, "contact.tangent_impulse (beyond +-2^29)");
+            at = r->pos;
+            cp->max_normal_impulse = take_i32(r, "contact.max_normal_impulse");
+            if (cp->max_normal_impulse < 0 || cp->max_normal_impulse > LIMIT_LAMBDA)
+                invalid(r, at, "contact.max_normal_impulse (outside 0..2^29)");
+            at = r->pos;
+            cp->push_impulse = take_i32(r, "contact.push_impulse");
+            if (cp->push_impulse < 0 || cp->push_impulse > LIMIT_LAMBDA) invalid(r, at, "contact.push_impulse (outside 0..2^29)");
+        }
+        if (w != NULL) w->contacts[i] = c;
+    }
+    if (w != NULL) w->contact_count = n;
+}
+
+static void decode_broadphase(source *r, pg_world *w, const pg_world_def *caps, size_t start, size_t length)
+{
+    uint32_t i;
+    size_t at;
+    (void)w;
+    (void)caps;
+    /* derived: must be exactly what the bodies and shapes above imply */
+    for (i = 0; r->shape_owner != NULL && i < r->n_shapes && r->error_field == NULL; ++i) {
+        uint32_t owner = r->shape_owner[i];
+        if (owner == PG_NULL_INDEX) continue;
+        at = r->pos;
+        if (take_u32(r, "broadphase.shape") != i) invalid(r, at, "broadphase.shape");
+        at = r->pos;
+        if (take(r, "broadphase.active") != r->body_info[5u * owner + 3u]) invalid(r, at, "broadphase.active");
+    }
+    if (r->shape_owner == NULL) r->pos = r->error_field == NULL ? start + length : r->pos;
+}
+
+/* Parse (and with `w` non-NULL, apply) one snapshot whose checksums have been checked
+ * (see pg_world_snapshot_restore). Applying assumes a validated input. */
 static void decode(source *r, pg_world *w, const pg_world_def *caps)
 {
+    static void (*const decoders[PG_SECTION_COUNT])(source *, pg_world *, const pg_world_def *, size_t, size_t) = {
+        decode_settings, decode_bodies, decode_shapes, decode_contacts, decode_broadphase, NULL};
     int k;
-    uint32_t i, n;
     size_t at;
     if (take_u32(r, "magic") != SNAPSHOT_MAGIC) invalid(r, 0, "magic");
     at = r->pos;
@@ -412,355 +793,80 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
         length = take_u32(r, "section length");
         start = r->pos;
         if (r->error_field == NULL && length > r->size - r->pos) invalid(r, start - 4u, "section length");
-        if (k == PG_SECTION_SETTINGS) {
-            pg_world_def d = *caps;
-            uint64_t frame;
-            d.gravity = take_vec(r, "settings.gravity");
-            d.step_hz = take_u32(r, "settings.step_hz");
-            d.substeps = take_u32(r, "settings.substeps");
-            d.effects = take_u32(r, "settings.effects");
-            d.contact_hertz = take_i32(r, "settings.contact_hertz");
-            d.contact_damping_ratio = take_i32(r, "settings.contact_damping_ratio");
-            d.contact_push_max = take_i32(r, "settings.contact_push_max");
-            d.restitution_threshold = take_i32(r, "settings.restitution_threshold");
-            d.max_linear_speed = take_i32(r, "settings.max_linear_speed");
-            d.sleep_linear_tolerance = take_i32(r, "settings.sleep_linear_tolerance");
-            d.sleep_angular_tolerance = take_i32(r, "settings.sleep_angular_tolerance");
-            d.time_to_sleep = take_i32(r, "settings.time_to_sleep");
-            frame = take_u64(r, "settings.frame");
-            if (r->error_field == NULL && pg_world_memory_size(&d) == 0) invalid(r, start, "settings (a value is out of range)");
-            if (w != NULL) {
-                w->def = d;
-                w->frame = frame;
-            }
-        } else if (k == PG_SECTION_BODIES) {
-            at = r->pos;
-            n = take_u32(r, "bodies.count");
-            if (n > caps->max_bodies) invalid(r, at, "bodies.count");
-            r->n_bodies = n <= caps->max_bodies ? n : 0u;
-            for (i = 0; i < n && r->error_field == NULL; ++i) {
-                pg_body b;
-                uint32_t used, m, flags;
-                unsigned char *p = (unsigned char *)&b;
-                size_t z;
-                for (z = 0; z < sizeof b; ++z) p[z] = 0;
-                b.generation = take_u32(r, "body.generation");
-                at = r->pos;
-                used = take(r, "body.used");
-                if (used > 1u) invalid(r, at, "body.used");
-                b.first_shape = PG_NULL_INDEX;
-                b.island = PG_NULL_INDEX;
-                b.gravity_scale = PG_FIX_ONE;
-                if (used) {
-                    size_t presence_at = r->pos;
-                    m = take_u32(r, "body.presence");
-                    if (m >= (B_MASS << 1)) invalid(r, presence_at, "body.presence");
-                    at = r->pos;
-                    b.type = (pg_body_type)take(r, "body.type");
-                    if ((unsigned)b.type > (unsigned)PG_BODY_DYNAMIC) invalid(r, at, "body.type");
-                    if (r->error_field == NULL && ((m & B_MASS) != 0) != (b.type == PG_BODY_DYNAMIC)) invalid(r, at, "body.type (mass data)");
-                    at = r->pos;
-                    flags = take(r, "body.flags");
-                    if ((flags & ~(uint32_t)(PG_BODY_FLAG_AWAKE | PG_BODY_FLAG_FIXED_ROTATION | PG_BODY_FLAG_ALLOW_SLEEP)) != 0) invalid(r, at, "body.flags");
-                    b.flags = flags | PG_BODY_FLAG_USED | PG_BODY_FLAG_GEOMETRY_DIRTY;
-                    b.center = take_vec(r, "body.center");
-                    b.angle = take_u32(r, "body.angle");
-                    at = r->pos;
-                    b.first_shape = take_u32(r, "body.first_shape");
-                    if (b.first_shape != PG_NULL_INDEX && b.first_shape >= caps->max_shapes) invalid(r, at, "body.first_shape");
-                    b.shape_count = take_u32(r, "body.shape_count");
-                    /* every value within what a world can hold (the LIMIT_* above) */
-                    if (m & B_VELOCITY) {
-                        at = r->pos;
-                        b.v = take_vec(r, "body.velocity");
-                        if (!within(b.v.x, LIMIT_VELOCITY) || !within(b.v.y, LIMIT_VELOCITY))
-                            invalid(r, at, "body.velocity (a component beyond 8192 m/s)");
-                        else if (b.type == PG_BODY_STATIC) invalid(r, at, "body.velocity (a static body does not move)");
-                    }
-                    if (m & B_ANGULAR) {
-                        at = r->pos;
-                        b.w = take_i32(r, "body.angular_velocity");
-                        if (!within(b.w, LIMIT_VELOCITY)) invalid(r, at, "body.angular_velocity (beyond 8192 rad/s)");
-                        else if (b.type == PG_BODY_STATIC) invalid(r, at, "body.angular_velocity (a static body does not move)");
-                        else if ((flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) invalid(r, at, "body.angular_velocity (the body has fixed rotation)");
-                    }
-                    if (m & B_FORCES) {
-                        at = r->pos;
-                        b.force_x = take_i64(r, "body.force");
-                        b.force_y = take_i64(r, "body.force");
-                        if (!within64(b.force_x, LIMIT_FORCE) || !within64(b.force_y, LIMIT_FORCE))
-                            invalid(r, at, "body.force (a component beyond 2^60, the accumulator's clamp)");
-                        at = r->pos;
-                        b.torque = take_i64(r, "body.torque");
-                        if (!within64(b.torque, LIMIT_FORCE)) invalid(r, at, "body.torque (beyond 2^60, the accumulator's clamp)");
-                    }
-                    if (m & B_DAMPING) {
-                        at = r->pos;
-                        b.linear_damping = take_i32(r, "body.linear_damping");
-                        if (b.linear_damping < 0 || b.linear_damping > LIMIT_DAMPING) invalid(r, at, "body.linear_damping (outside 0..1000)");
-                        at = r->pos;
-                        b.angular_damping = take_i32(r, "body.angular_damping");
-                        if (b.angular_damping < 0 || b.angular_damping > LIMIT_DAMPING) invalid(r, at, "body.angular_damping (outside 0..1000)");
-                    }
-                    if (m & B_GRAVITY_SCALE) {
-                        at = r->pos;
-                        b.gravity_scale = take_i32(r, "body.gravity_scale");
-                        if (!within(b.gravity_scale, LIMIT_GRAVITY_SCALE)) invalid(r, at, "body.gravity_scale (outside -100..100)");
-                    }
-                    if (m & B_USER) b.user_data = take_u64(r, "body.user_data");
-                    if (m & B_SLEEP_TIME) {
-                        at = r->pos;
-                        b.sleep_time = take_i32(r, "body.sleep_time");
-                        if (b.sleep_time < 0 || b.sleep_time > LIMIT_SLEEP_TIME) invalid(r, at, "body.sleep_time (outside 0..1001 s)");
-                    }
-                    if (m & B_ISLAND) {
-                        at = r->pos;
-                        b.island = take_u32(r, "body.island");
-                        if (b.island >= caps->max_bodies) invalid(r, at, "body.island");
-                    }
-                    if (m & B_MASS) {
-                        at = r->pos;
-                        b.local_center = take_vec(r, "body.local_center");
-                        if (!within(b.local_center.x, LIMIT_LOCAL_CENTER) || !within(b.local_center.y, LIMIT_LOCAL_CENTER))
-                            invalid(r, at, "body.local_center (beyond the 50 m its shapes may reach)");
-                        at = r->pos;
-                        b.mass = take_i64(r, "body.mass");
-                        if (b.mass <= 0) invalid(r, at, "body.mass (a dynamic body's mass is positive)");
-                        at = r->pos;
-                        b.inertia = take_i64(r, "body.inertia");
-                        if (b.inertia < 0) invalid(r, at, "body.inertia (negative)");
-                        else if (r->error_field == NULL) {
-                            /* what a world refuses to create, a snapshot may not hold */
-                            pg_mass_data md;
-                            md.mass = b.mass;
-                            md.inertia = b.inertia;
-                            md.center = b.local_center;
-                            if (pg__mass_data_problem(md, (flags & PG_BODY_FLAG_FIXED_ROTATION) == 0) != NULL)
-                                invalid(r, at, "body.mass or body.inertia (outside the envelope: its inverse leaves Q25.38)");
-                        }
-                    }
-                    pg__body_set_inverse_mass(&b);
-                    /* one encoding per state: a present optional field is not its default */
-                    if (((m & B_VELOCITY) && b.v.x == 0 && b.v.y == 0) || ((m & B_ANGULAR) && b.w == 0) ||
-                        ((m & B_FORCES) && b.force_x == 0 && b.force_y == 0 && b.torque == 0) ||
-                        ((m & B_DAMPING) && b.linear_damping == 0 && b.angular_damping == 0) ||
-                        ((m & B_GRAVITY_SCALE) && b.gravity_scale == PG_FIX_ONE) || ((m & B_USER) && b.user_data == 0) ||
-                        ((m & B_SLEEP_TIME) && b.sleep_time == 0) || ((m & B_ISLAND) && b.island == PG_NULL_INDEX))
-                        invalid(r, presence_at, "body.presence (a present field holds its default)");
-                    b.rot = pg_rot_from_angle(b.angle);
-                    b.origin = pg_v2_sub(b.center, pg_rot_apply(b.rot, b.local_center));
-                }
-                if (r->body_info != NULL) {
-                    r->body_info[5u * i] = used ? 1u + (uint32_t)b.type : 0u;
-                    r->body_info[5u * i + 1u] = used ? b.first_shape : PG_NULL_INDEX;
-                    r->body_info[5u * i + 2u] = b.shape_count;
-                    r->body_info[5u * i + 3u] = used ? (uint32_t)pg__body_is_active(&b) : 0u;
-                    r->body_info[5u * i + 4u] = used ? b.island : PG_NULL_INDEX;
-                }
-                if (w != NULL) w->bodies[i] = b;
-            }
-            if (r->body_info != NULL) { /* islands name used bodies */
-                for (i = 0; i < n && r->error_field == NULL; ++i) {
-                    uint32_t island = r->body_info[5u * i + 4u];
-                    if (r->body_info[5u * i] && island != PG_NULL_INDEX && (island >= n || !r->body_info[5u * island]))
-                        invalid(r, start, "body.island (not a used body)");
-                }
-            }
-            if (w != NULL) {
-                for (i = n; i < w->def.max_bodies; ++i) { /* slots never used */
-                    w->bodies[i].flags = 0;
-                    w->bodies[i].generation = 0;
-                }
-                w->body_high = n;
-            }
-        } else if (k == PG_SECTION_SHAPES) {
-            at = r->pos;
-            n = take_u32(r, "shapes.count");
-            if (n > caps->max_shapes) invalid(r, at, "shapes.count");
-            r->n_shapes = n <= caps->max_shapes ? n : 0u;
-            for (i = 0; i < n && r->error_field == NULL; ++i) {
-                pg_shape sh;
-                uint32_t used;
-                int32_t v;
-                unsigned char *p = (unsigned char *)&sh;
-                size_t z;
-                for (z = 0; z < sizeof sh; ++z) p[z] = 0;
-                sh.generation = take_u32(r, "shape.generation");
-                at = r->pos;
-                used = take(r, "shape.used");
-                if (used > 1u) invalid(r, at, "shape.used");
-                sh.used = used;
-                sh.next = PG_NULL_INDEX;
-                if (used) {
-                    at = r->pos;
-                    sh.body = take_u32(r, "shape.body");
-                    if (sh.body >= caps->max_bodies) invalid(r, at, "shape.body");
-                    at = r->pos;
-                    sh.next = take_u32(r, "shape.next");
-                    if (sh.next != PG_NULL_INDEX && sh.next >= caps->max_shapes) invalid(r, at, "shape.next");
-                    at = r->pos;
-                    sh.geometry.kind = (pg_shape_kind)take(r, "shape.kind");
-                    if ((unsigned)sh.geometry.kind > (unsigned)PG_SHAPE_POLYGON) invalid(r, at, "shape.kind");
-                    at = r->pos;
-                    sh.geometry.count = (int32_t)take(r, "shape.vertex_count");
-                    if (sh.geometry.count < 1 || sh.geometry.count > PG_MAX_VERTICES) invalid(r, at, "shape.vertex_count");
-                    for (v = 0; v < sh.geometry.count && r->error_field == NULL; ++v) sh.geometry.vertices[v] = take_vec(r, "shape.vertex");
-                    sh.geometry.radius = take_i32(r, "shape.radius");
-                    sh.density = take_i32(r, "shape.density");
-                    sh.friction = take_i32(r, "shape.friction");
-                    sh.restitution = take_i32(r, "shape.restitution");
-                    sh.category = take_u32(r, "shape.category");
-                    sh.mask = take_u32(r, "shape.mask");
-                    if (r->error_field == NULL && pg__validate_geometry(&sh.geometry) != PG_OK) invalid(r, at, "shape.geometry");
-                    /* a moving body's shapes reach less far than a static one's (validation pass:
-                     * the bodies, read before the shapes, are in body_info) */
-                    if (r->error_field == NULL && r->body_info != NULL && sh.body < r->n_bodies && r->body_info[5u * sh.body] != 0u &&
-                        pg__geometry_reach(&sh.geometry) > pg__body_reach_limit((pg_body_type)(r->body_info[5u * sh.body] - 1u)))
-                        invalid(r, at, "shape.geometry (reaches farther from its body's origin than the body's type allows)");
-                    if (sh.density < 0 || sh.density > PG_FIX_C(100) || sh.friction < 0 || sh.friction > PG_FIX_C(10) ||
-                        sh.restitution < 0 || sh.restitution > PG_FIX_ONE)
-                        invalid(r, at, "shape.material");
-                    if (w != NULL && r->error_field == NULL) {
-                        pg__shape_build_local(&sh.geometry, &sh.local);
-                        pg__shape_set_extents(&sh); /* derived, like local: not stored */
-                    }
-                }
-                if (r->shape_owner != NULL) {
-                    r->shape_owner[i] = used ? sh.body : PG_NULL_INDEX;
-                    r->shape_next[i] = sh.next;
-                    r->shape_mark[i] = 0;
-                }
-                if (w != NULL) w->shapes[i] = sh;
-            }
-            if (r->shape_owner != NULL && r->error_field == NULL) {
-                /* every used body's list holds exactly its shape_count shapes, each owned
-                 * by it and met once; every used shape is on its owner's list */
-                uint32_t b;
-                for (b = 0; b < r->n_bodies && r->error_field == NULL; ++b) {
-                    uint32_t sidx = r->body_info[5u * b + 1u], k2;
-                    if (!r->body_info[5u * b]) continue;
-                    for (k2 = 0; k2 < r->body_info[5u * b + 2u]; ++k2) {
-                        if (sidx >= n || r->shape_owner[sidx] != b || r->shape_mark[sidx]) { invalid(r, start, "shape lists (body.first_shape, shape.next, shape.body)"); break; }
-                        r->shape_mark[sidx] = 1;
-                        sidx = r->shape_next[sidx];
-                    }
-                    if (r->error_field == NULL && sidx != PG_NULL_INDEX) invalid(r, start, "shape lists (body.shape_count)");
-                }
-                for (i = 0; i < n && r->error_field == NULL; ++i) /* owners are used bodies */
-                    if (r->shape_owner[i] != PG_NULL_INDEX && (r->shape_owner[i] >= r->n_bodies || !r->body_info[5u * r->shape_owner[i]]))
-                        invalid(r, start, "shape.body (not a used body)");
-                for (i = 0; i < n && r->error_field == NULL; ++i)
-                    if (r->shape_owner[i] != PG_NULL_INDEX && !r->shape_mark[i]) invalid(r, start, "shape lists (a shape is on no list)");
-            }
-            if (w != NULL) {
-                uint32_t count = 0;
-                for (i = n; i < w->def.max_shapes; ++i) {
-                    w->shapes[i].used = 0;
-                    w->shapes[i].generation = 0;
-                }
-                w->shape_high = n;
-                for (i = 0; i < n; ++i) count += w->shapes[i].used ? 1u : 0u;
-                w->shape_count = count;
-                /* derived from the shapes and the bodies' centres of mass: not stored */
-                for (i = 0; i < w->body_high; ++i)
-                    if ((w->bodies[i].flags & PG_BODY_FLAG_USED) != 0) pg__body_set_turn_extents(w, i);
-            }
-        } else if (k == PG_SECTION_CONTACTS) {
-            uint32_t prev_a = 0, prev_b = 0;
-            at = r->pos;
-            n = take_u32(r, "contacts.count");
-            if (n > caps->max_contacts) invalid(r, at, "contacts.count");
-            for (i = 0; i < n && r->error_field == NULL; ++i) {
-                pg_contact c;
-                int32_t q;
-                size_t normal_at;
-                unsigned char *p = (unsigned char *)&c;
-                size_t z;
-                for (z = 0; z < sizeof c; ++z) p[z] = 0;
-                at = r->pos;
-                c.shape_a = take_u32(r, "contact.shape_a");
-                c.shape_b = take_u32(r, "contact.shape_b");
-                if (c.shape_a >= caps->max_shapes || c.shape_b >= caps->max_shapes || c.shape_a >= c.shape_b) invalid(r, at, "contact.shapes");
-                if (r->shape_owner != NULL && r->error_field == NULL) {
-                    if (c.shape_b >= r->n_shapes || r->shape_owner[c.shape_a] == PG_NULL_INDEX || r->shape_owner[c.shape_b] == PG_NULL_INDEX)
-                        invalid(r, at, "contact.shapes (unused shape)");
-                    else if (i > 0 && (c.shape_a < prev_a || (c.shape_a == prev_a && c.shape_b <= prev_b)))
-                        invalid(r, at, "contact.shapes (not in order)");
-                    prev_a = c.shape_a;
-                    prev_b = c.shape_b;
-                }
-                at = r->pos;
-                c.body_a = take_u32(r, "contact.body_a");
-                c.body_b = take_u32(r, "contact.body_b");
-                if (c.body_a >= caps->max_bodies || c.body_b >= caps->max_bodies) invalid(r, at, "contact.bodies");
-                if (r->shape_owner != NULL && r->error_field == NULL &&
-                    (c.body_a != r->shape_owner[c.shape_a] || c.body_b != r->shape_owner[c.shape_b]))
-                    invalid(r, at, "contact.bodies (not the shapes' owners)");
-                normal_at = r->pos;
-                c.normal.x = take_i32(r, "contact.normal");
-                c.normal.y = take_i32(r, "contact.normal");
-                /* a mix of two shapes' materials (contact.c): friction sqrt(fa fb) <= 10,
-                 * restitution max(ra, rb) <= 1 */
-                at = r->pos;
-                c.friction = take_i32(r, "contact.friction");
-                if (c.friction < 0 || c.friction > PG_ENV_MAX_FRICTION) invalid(r, at, "contact.friction (outside 0..10)");
-                at = r->pos;
-                c.restitution = take_i32(r, "contact.restitution");
-                if (c.restitution < 0 || c.restitution > PG_FIX_ONE) invalid(r, at, "contact.restitution (outside 0..1)");
-                at = r->pos;
-                c.point_count = (int32_t)take(r, "contact.point_count");
-                if (c.point_count > 2) invalid(r, at, "contact.point_count");
-                else if (r->error_field == NULL && !normal_ok(c.normal, c.point_count)) invalid(r, normal_at, "contact.normal (not a unit vector)");
-                for (q = 0; q < c.point_count && r->error_field == NULL; ++q) {
-                    pg_contact_point *cp = &c.points[q];
-                    cp->point = take_vec(r, "contact.point");
-                    at = r->pos;
-                    cp->separation = take_i32(r, "contact.separation");
-                    if (cp->separation < -LIMIT_PENETRATION) invalid(r, at, "contact.separation (deeper than two shapes can overlap)");
-                    cp->id = take_u32(r, "contact.id");
-                    /* the solver keeps the accumulated impulses within its LAMBDA_MAX */
-                    at = r->pos;
-                    cp->normal_impulse = take_i32(r, "contact.normal_impulse");
-                    if (cp->normal_impulse < 0 || cp->normal_impulse > LIMIT_LAMBDA) invalid(r, at, "contact.normal_impulse (outside 0..2^29)");
-                    at = r->pos;
-                    cp->tangent_impulse = take_i32(r, "contact.tangent_impulse");
-                    if (!within(cp->tangent_impulse, LIMIT_LAMBDA)) invalid(r, at, "contact.tangent_impulse (beyond +-2^29)");
-                    at = r->pos;
-                    cp->max_normal_impulse = take_i32(r, "contact.max_normal_impulse");
-                    if (cp->max_normal_impulse < 0 || cp->max_normal_impulse > LIMIT_LAMBDA)
-                        invalid(r, at, "contact.max_normal_impulse (outside 0..2^29)");
-                    at = r->pos;
-                    cp->push_impulse = take_i32(r, "contact.push_impulse");
-                    if (cp->push_impulse < 0 || cp->push_impulse > LIMIT_LAMBDA) invalid(r, at, "contact.push_impulse (outside 0..2^29)");
-                }
-                if (w != NULL) w->contacts[i] = c;
-            }
-            if (w != NULL) w->contact_count = n;
-        } else if (k == PG_SECTION_BROADPHASE) {
-            /* derived: must be exactly what the bodies and shapes above imply */
-            for (i = 0; r->shape_owner != NULL && i < r->n_shapes && r->error_field == NULL; ++i) {
-                uint32_t owner = r->shape_owner[i];
-                if (owner == PG_NULL_INDEX) continue;
-                at = r->pos;
-                if (take_u32(r, "broadphase.shape") != i) invalid(r, at, "broadphase.shape");
-                at = r->pos;
-                if (take(r, "broadphase.active") != r->body_info[5u * owner + 3u]) invalid(r, at, "broadphase.active");
-            }
-            if (r->shape_owner == NULL) r->pos = r->error_field == NULL ? start + length : r->pos;
-        } else {
-            r->pos = r->error_field == NULL ? start + length : r->pos; /* joints: empty */
-        }
+        if (r->error_field != NULL) break;
+        if (decoders[k] != NULL) decoders[k](r, w, caps, start, length);
+        else r->pos = start + length; /* joints: empty */
         if (r->error_field == NULL && r->pos != start + length) invalid(r, start - 4u, "section length");
+        take_u64(r, "section hash"); /* checked with the checksum, before decoding */
     }
+    take_u64(r, "checksum");
     if (r->error_field == NULL && r->pos != r->size) invalid(r, r->pos, "trailing bytes");
+}
+
+static int sections_of(const uint8_t *p, size_t size, size_t start[PG_SECTION_COUNT], size_t length[PG_SECTION_COUNT]);
+
+static uint64_t read_u64_at(const uint8_t *p)
+{
+    uint64_t v = 0;
+    int i;
+    for (i = 7; i >= 0; --i) v = v << 8 | p[i];
+    return v;
+}
+
+/* Whether the snapshot's bytes are the ones saved: its magic and version (so that a
+ * snapshot of another version is named as one, not as damage), then the checksum. On
+ * failure writes a message with the offset into t and returns 0. */
+static int check_integrity(const uint8_t *p, size_t size, pg__text *t)
+{
+    size_t start[PG_SECTION_COUNT], length[PG_SECTION_COUNT];
+    uint32_t version;
+    int k;
+    if (size < SNAPSHOT_HEADER_SIZE + 8u) {
+        pg__text_put(t, "corrupt snapshot at offset ");
+        pg__text_u64(t, size);
+        pg__text_put(t, ": it ends there, before any snapshot's end (cut short)");
+        return 0;
+    }
+    if (((uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24) != SNAPSHOT_MAGIC) {
+        pg__text_put(t, "corrupt snapshot at offset 0, field magic (not a pogon snapshot)");
+        return 0;
+    }
+    version = (uint32_t)p[4] | (uint32_t)p[5] << 8;
+    if (version != SNAPSHOT_VERSION) {
+        pg__text_put(t, "snapshot format version ");
+        pg__text_u64(t, version);
+        pg__text_put(t, " at offset 4; this build reads version ");
+        pg__text_u64(t, SNAPSHOT_VERSION);
+        pg__text_put(t, " only (save it again with this build)");
+        return 0;
+    }
+    if (pg_hash_bytes(PG_HASH_SEED, p, size - 8u) == read_u64_at(p + size - 8u)) return 1;
+    /* name the section whose bytes no longer match its hash, when the framing allows */
+    if (sections_of(p, size, start, length))
+        for (k = 0; k < PG_SECTION_COUNT; ++k)
+            if (pg_hash_bytes(PG_HASH_SEED, p + start[k], length[k]) != read_u64_at(p + start[k] + length[k])) {
+                pg__text_put(t, "corrupt snapshot at offset ");
+                pg__text_u64(t, start[k]);
+                pg__text_put(t, ", section ");
+                pg__text_put(t, pg_section_name((pg_section)k));
+                pg__text_put(t, " (its bytes do not match its hash)");
+                return 0;
+            }
+    pg__text_put(t, "corrupt snapshot at offset ");
+    pg__text_u64(t, size - 8u);
+    pg__text_put(t, ", field checksum (the bytes before it do not match it: damaged or cut)");
+    return 0;
 }
 
 pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_t size)
 {
     source r;
     uint32_t i, bodies = 0;
+    char detail[134]; /* what last_error holds after "PG_ERR_INVALID_ARGUMENT: " */
+    pg__text t = pg__text_in(detail, sizeof detail);
     if (world == NULL) return PG_ERR_NULL;
     if (snapshot == NULL) return pg__fail(world, PG_ERR_NULL, "pg_world_snapshot_restore: snapshot is NULL");
+    if (!check_integrity((const uint8_t *)snapshot, size, &t)) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, detail);
     r.p = (const uint8_t *)snapshot;
     r.size = size;
     r.pos = 0;
@@ -768,15 +874,17 @@ pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_
     r.error_offset = 0;
     r.n_bodies = r.n_shapes = 0;
     /* per-step scratch, free between steps: the solver scratch holds 5 u32 per body,
-     * the compacted proxy arrays one entry per shape */
+     * the compacted proxy arrays one entry per shape (decode_bodies and decode_shapes
+     * write at most max_bodies and max_shapes entries: their counts are checked first) */
+    if (world->solver_scratch_bytes < (size_t)5u * sizeof(uint32_t) * world->def.max_bodies ||
+        sizeof *world->proxy_boxes < sizeof(uint32_t))
+        return pg__fail(world, PG_ERR_MEMORY, "pg_world_snapshot_restore: the world's scratch is too small to validate a snapshot");
     r.body_info = (uint32_t *)world->solver_scratch;
     r.shape_owner = world->proxy_shape;
     r.shape_next = (uint32_t *)(void *)world->proxy_boxes;
     r.shape_mark = world->proxy_flags_compact;
     decode(&r, NULL, &world->def); /* validate everything first */
     if (r.error_field != NULL) {
-        char detail[134]; /* what last_error holds after "PG_ERR_INVALID_ARGUMENT: " */
-        pg__text t = pg__text_in(detail, sizeof detail);
         pg__text_put(&t, "corrupt snapshot at offset ");
         pg__text_u64(&t, r.error_offset);
         pg__text_put(&t, ", field ");
@@ -801,7 +909,7 @@ pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_
 /* Section byte ranges of a snapshot (no validation beyond the framing). */
 static int sections_of(const uint8_t *p, size_t size, size_t start[PG_SECTION_COUNT], size_t length[PG_SECTION_COUNT])
 {
-    size_t pos = 18; /* magic, version, three capacities */
+    size_t pos = SNAPSHOT_HEADER_SIZE;
     int k;
     if (size < pos) return 0;
     for (k = 0; k < PG_SECTION_COUNT; ++k) {
@@ -809,10 +917,10 @@ static int sections_of(const uint8_t *p, size_t size, size_t start[PG_SECTION_CO
         if (size - pos < 5 || p[pos] != (uint8_t)k) return 0;
         len = (size_t)p[pos + 1] | (size_t)p[pos + 2] << 8 | (size_t)p[pos + 3] << 16 | (size_t)p[pos + 4] << 24;
         pos += 5;
-        if (len > size - pos) return 0;
+        if (len > size - pos || size - pos - len < 8) return 0;
         start[k] = pos;
         length[k] = len;
-        pos += len;
+        pos += len + 8u; /* and the section hash */
     }
     return 1;
 }

@@ -181,7 +181,7 @@ pg_world_stats pg_world_get_stats(const pg_world *world)
     pg_world_stats s;
     uint32_t i;
     if (world == NULL) {
-        pg_world_stats zero = {0, 0, 0, 0, 0, 0, 0, 0};
+        pg_world_stats zero = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
         return zero;
     }
     s = world->stats;
@@ -209,6 +209,7 @@ pg_result pg_world_step(pg_world *world)
     for (i = 0; i < world->body_high; ++i) {
         pg_body *b = &world->bodies[i];
         if ((b->flags & PG_BODY_FLAG_USED) == 0) continue;
+        b->flags &= ~(uint32_t)(PG_BODY_FLAG_SPEED_CLAMPED | PG_BODY_FLAG_SPIN_CLAMPED); /* this step's report */
         if (pg__body_is_active(b) || (b->flags & PG_BODY_FLAG_GEOMETRY_DIRTY) != 0) {
             pg__body_sync_geometry(world, i);
             ++moving;

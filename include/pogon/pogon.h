@@ -57,7 +57,9 @@
  *   >= 2^-8 m (its inverses' formats; a 0.01 m ball needs fixed rotation);
  *   density 0.1 .. 100 kg/m^2 (0 allowed on static bodies), friction 0 .. 10,
  *   restitution 0 .. 1, positions within +-1000 m, speeds up to max_linear_speed
- *   (default 400 m/s, a cap that is counted in pg_world_stats.speed_clamps).
+ *   (default 400 m/s) and angular speeds up to 1000 rad/s: caps the step keeps (counted
+ *   in pg_world_stats.speed_clamps and spin_clamps, flagged by pg_body_limits), so every
+ *   velocity a getter returns is one its setter accepts.
  *   Everything outside is refused with PG_ERR_ENVELOPE and a message naming the limit.
  */
 #ifndef POGON_POGON_H
@@ -200,8 +202,14 @@ typedef struct pg_world_stats {
     uint32_t contact_count;          /**< contacts, touching or within the speculative distance */
     uint32_t touching_contact_count; /**< contacts whose shapes touch */
     uint32_t pair_count;             /**< pairs the broadphase found in the last step */
-    uint32_t speed_clamps;     /**< velocities clamped to max_linear_speed, all time */
-    uint32_t capacity_misses;  /**< contacts dropped because max_contacts was reached, all time */
+    uint32_t speed_clamps;     /**< linear velocities scaled down to max_linear_speed (by a
+                                    step or an impulse), all time */
+    uint32_t capacity_misses;  /**< contacts and candidate pairs dropped because max_contacts
+                                    was reached, one per pair, all time (saturates) */
+    uint32_t spin_clamps;      /**< angular velocities clamped to +-1000 rad/s, all time */
+    uint32_t envelope_exits;   /**< times a step carried a body's origin out of +-1000 m, all
+                                    time (beyond it precision falls and at +-32768 m positions
+                                    stop: see pg_body_limits) */
 } pg_world_stats;
 /** The world's counts now. */
 pg_world_stats pg_world_get_stats(const pg_world *world);
@@ -255,6 +263,18 @@ int pg_body_is_awake(const pg_world *world, pg_body_id body);                   
 uint64_t pg_body_user_data(const pg_world *world, pg_body_id body);             /**< as set */
 /** Up to `capacity` shape handles of the body; returns the body's shape count. */
 uint32_t pg_body_shapes(const pg_world *world, pg_body_id body, pg_shape_id *out, uint32_t capacity);
+
+/** Which limits of the envelope the body meets: PG_BODY_LIMIT_* bits (0 for an invalid
+ * handle). The step keeps every velocity within what the setters accept, and says so
+ * here; a position it cannot keep inside the envelope (a body pushed or flung past
+ * +-1000 m) it reports, since pg_body_set_transform and scene files refuse it. */
+uint32_t pg_body_limits(const pg_world *world, pg_body_id body);
+/** pg_body_limits(): the last step or an impulse since scaled its linear velocity down to max_linear_speed */
+#define PG_BODY_LIMIT_SPEED_CLAMPED (1u << 0)
+/** pg_body_limits(): the last step or an impulse since clamped its angular velocity to +-1000 rad/s */
+#define PG_BODY_LIMIT_SPIN_CLAMPED  (1u << 1)
+/** pg_body_limits(): its origin is beyond +-1000 m now */
+#define PG_BODY_LIMIT_OUTSIDE       (1u << 2)
 
 /** Move the body's origin to `position` and turn it to `angle` (within the envelope). */
 pg_result pg_body_set_transform(pg_world *world, pg_body_id body, pg_vec2 position, pg_angle angle);

@@ -168,8 +168,11 @@ size_t pg_world_snapshot_size(const pg_world *world);
 pg_result pg_world_snapshot_save(const pg_world *world, void *buffer, size_t capacity, size_t *written);
 /** Restore into `world` (created with the same capacities as the saved world).
  * The snapshot is validated first: a corrupt one changes nothing and returns
- * PG_ERR_INVALID_ARGUMENT with the offset and field in pg_world_last_error(). Corrupt
- * means anything no world can hold: broken links between bodies, shapes and contacts,
+ * PG_ERR_INVALID_ARGUMENT with the offset and field in pg_world_last_error(). A snapshot
+ * carries a hash per section and a checksum over all its bytes, checked before anything
+ * else: any one damaged byte is refused, with the offset of the section it lies in. A
+ * snapshot of another format version is refused as one (docs/snapshots.md). Behind the
+ * checksum, corrupt also means anything no world can hold: broken links between bodies, shapes and contacts,
  * shapes or mass data pg_shape_create would refuse, and values beyond what the setters
  * and the step ever write (velocities beyond 8192 m/s or rad/s per component, forces and
  * torques beyond the accumulators' 2^60, damping, gravity scale or sleep timers outside

@@ -124,7 +124,9 @@ int pg_replay_writer_checkpoint_due(const pg_replay_writer *w);
 /** The commands applied before the next step (count <= PG_REPLAY_MAX_FRAME_COMMANDS; 0 is fine).
  * PG_ERR_INVALID_ARGUMENT when a checkpoint is due or a command does not encode. */
 pg_result pg_replay_writer_add_frame(pg_replay_writer *w, const pg_command *commands, uint32_t count);
-/** The checkpoint that is due: the whole-state hash and PG_SECTION_COUNT section hashes. */
+/** The checkpoint that is due: the whole-state hash and PG_SECTION_COUNT section hashes.
+ * PG_ERR_INVALID_ARGUMENT when the hash is not the one pg_world_hash makes of those
+ * sections (FNV-1a of them, little-endian), which the reader checks. */
 pg_result pg_replay_writer_add_checkpoint(pg_replay_writer *w, uint64_t hash, const uint64_t sections[PG_SECTION_COUNT]);
 /** The checkpoint that is due, with the hashes of `world` as it is now. */
 pg_result pg_replay_writer_add_checkpoint_world(pg_replay_writer *w, const pg_world *world);
@@ -154,7 +156,8 @@ typedef struct pg_replay_frame_result {
     uint32_t command_failures;    /**< of them, those whose call failed */
     int checkpoint;               /**< 1 when a checkpoint fell on frame + 1 and was compared */
     uint32_t checkpoint_index;    /**< which checkpoint, when checkpoint is 1 */
-    int match;                    /**< 1 when checkpoint is 0 or the checkpoint matched */
+    int match;                    /**< 1 when checkpoint is 0 or the checkpoint matched: its
+                                     state hash and every section hash it stores */
     uint64_t expected_hash;       /**< the checkpoint's hash in the file */
     uint64_t actual_hash;         /**< the world's hash now */
     uint32_t section_mismatch;    /**< bit s set: section s differs (sections of this build) */
@@ -181,8 +184,9 @@ pg_result pg_replay_player_step(pg_replay_player *p, pg_replay_frame_result *out
 pg_result pg_replay_apply_frame(pg_world *world, const uint8_t *data, const pg_replay_info *info, size_t record_offset,
                                 uint32_t *applied, uint32_t *failures);
 
-/** Compare a world with checkpoint `index`: returns 1 when the whole hash matches;
- * *section_mismatch (may be NULL) gets a bit per differing section. */
+/** Compare a world with checkpoint `index`: returns 1 when the whole hash and every
+ * stored section hash match; *section_mismatch (may be NULL) gets a bit per differing
+ * section. 0 for a NULL argument or an index past the last checkpoint. */
 int pg_replay_compare_checkpoint(const pg_world *world, const uint8_t *data, const pg_replay_info *info, uint32_t index,
                                  uint64_t *expected, uint64_t *actual, uint32_t *section_mismatch);
 

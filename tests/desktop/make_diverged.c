@@ -3,7 +3,8 @@
  *
  * Usage: make_diverged SCENE OUT.pgr
  * Plays SCENE for 120 frames without commands, checkpoints every 30 frames, and stores
- * checkpoint 2 (frame 60) with its bodies-section hash and its whole-state hash changed.
+ * checkpoint 2 (frame 60) with its bodies-section hash changed and its whole-state hash
+ * made again from the sections.
  * The file's structure and checksums are correct: only replaying can tell. Test code.
  */
 #include <stdint.h>
@@ -49,8 +50,17 @@ int main(int argc, char **argv)
             uint64_t hash = pg_world_hash(world);
             pg_world_section_hashes(world, sections);
             if (frame + 1 == 60) {
+                /* a checkpoint consistent in itself (its state hash is the hash of its
+                 * section hashes, which the writer and reader check) that the world
+                 * does not match */
+                uint8_t bytes[8];
+                int k, i;
                 sections[PG_SECTION_BODIES] ^= 1u;
-                hash ^= 1u;
+                hash = PG_HASH_SEED;
+                for (k = 0; k < PG_SECTION_COUNT; ++k) {
+                    for (i = 0; i < 8; ++i) bytes[i] = (uint8_t)((sections[k] >> (8 * i)) & 0xFFu);
+                    hash = pg_hash_bytes(hash, bytes, 8);
+                }
             }
             if (pg_replay_writer_add_checkpoint(&w, hash, sections) != PG_OK) return 2;
         }

@@ -207,6 +207,29 @@ int main(int argc, char **argv)
     expect(rc == 2 && named_offset(out) == 8 && strstr(out, "format_version") != NULL,
            "format version 2 -> exit 2 naming offset 8, header.format_version", out);
 
+    /* checkpoint 0 altered with its block hash and the file checksum recomputed: its
+     * section hash for bodies, then its state hash. Either way the state hash is no longer
+     * the hash of the section hashes: exit 2 naming the checkpoint's hash field */
+    {
+        size_t cp = info.records_offset, fields[2];
+        const char *labels[2] = {"checkpoint 0 section hash (bodies) altered, regions rehashed",
+                                 "checkpoint 0 state hash altered, regions rehashed"};
+        int k;
+        fields[0] = cp + 13u + 8u * PG_SECTION_BODIES;
+        fields[1] = cp + 5u;
+        for (k = 0; k < 2; ++k) {
+            memcpy(copy, file, size);
+            copy[fields[k] + 2] ^= 0x10;
+            put_u64(copy + cp + cs - 8u, pg_hash_bytes(PG_HASH_SEED, copy + cp, cs - 8u));
+            put_u64(copy + size - 8, pg_hash_bytes(PG_HASH_SEED, copy, size - 8));
+            rc = run_verify("altered_checkpoint.pgr", copy, size, out, sizeof out);
+            snprintf(what, sizeof what, "%s -> exit 2 (got %d) naming offset %zu and the section hashes", labels[k], rc, cp + 5u);
+            expect(rc == 2 && named_offset(out) == (long)(cp + 5u) && strstr(out, "not the hash of its section hashes") != NULL &&
+                       strstr(out, "another engine version") == NULL,
+                   what, out);
+        }
+    }
+
     /* one changed command, re-encoded, hashes fixed: valid file, verify exits 1 naming its frame */
     memcpy(copy, file, size);
     {

@@ -173,6 +173,45 @@ static void test_write_read_play(void **state)
     free(file2);
 }
 
+/* pg_replay_compare_checkpoint compares everything a checkpoint stores: the world at
+ * checkpoint 2's frame matches it and no other; one more step differs in the bodies
+ * section (and more); out-of-range indices and NULLs give 0. */
+static void test_compare_checkpoint(void **state)
+{
+    size_t size, mem;
+    uint64_t final_hash, want = 0, have = 0;
+    uint8_t *file = record(40, 10, 1 << 16, &size, &final_hash);
+    pg_replay_info info;
+    pg_replay_error err;
+    pg_replay_player p;
+    pg_replay_frame_result fr;
+    void *memory;
+    uint32_t mask = 0, k;
+    (void)state;
+    assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
+    assert_int_equal(pg_replay_world_memory_size(&info, &mem, &err), PG_OK);
+    memory = malloc(mem);
+    assert_int_equal(pg_replay_player_begin(&p, file, &info, memory, mem, &fr, &err), PG_OK);
+    assert_int_equal(pg_replay_compare_checkpoint(p.world, file, &info, 0, &want, &have, &mask), 1);
+    assert_true(want == have);
+    assert_int_equal(mask, 0);
+    while (p.frame < 20) assert_int_equal(pg_replay_player_step(&p, &fr), PG_OK);
+    for (k = 0; k < info.checkpoint_count; ++k) {
+        int m = pg_replay_compare_checkpoint(p.world, file, &info, k, &want, &have, &mask);
+        PG_EXPECT_EQ(m, k == 2, "checkpoint %u against the world at frame 20", (unsigned)k);
+        if (k != 2) assert_true(want != have && mask != 0);
+    }
+    assert_int_equal(pg_replay_player_step(&p, &fr), PG_OK);
+    assert_int_equal(pg_replay_compare_checkpoint(p.world, file, &info, 2, &want, &have, &mask), 0);
+    assert_true((mask & (1u << PG_SECTION_BODIES)) != 0);
+    assert_true(have == pg_world_hash(p.world));
+    assert_int_equal(pg_replay_compare_checkpoint(p.world, file, &info, info.checkpoint_count, NULL, NULL, NULL), 0);
+    assert_int_equal(pg_replay_compare_checkpoint(NULL, file, &info, 0, NULL, NULL, NULL), 0);
+    assert_int_equal(pg_replay_compare_checkpoint(p.world, NULL, &info, 0, NULL, NULL, NULL), 0);
+    free(memory);
+    free(file);
+}
+
 /* Every single-bit flip is detected, and the reported offset lies in the flipped region. */
 static void test_every_bit_flip(void **state)
 {
@@ -357,8 +396,14 @@ static void test_writer_rejects(void **state)
                      PG_ERR_INVALID_ARGUMENT);
     assert_int_equal(pg_replay_writer_begin(&w, buf, 50, scene_text, sizeof scene_text - 1, 5), PG_ERR_MEMORY);
     assert_int_equal(pg_replay_writer_begin(&w, buf, sizeof buf, scene_text, sizeof scene_text - 1, 5), PG_OK);
-    assert_int_equal(pg_replay_writer_add_checkpoint(&w, 1, sections), PG_OK);
+    /* a state hash that is not the hash of the section hashes is refused */
     assert_int_equal(pg_replay_writer_add_checkpoint(&w, 1, sections), PG_ERR_INVALID_ARGUMENT);
+    {
+        uint8_t zeros[8 * PG_SECTION_COUNT] = {0};
+        uint64_t h = pg_hash_bytes(PG_HASH_SEED, zeros, sizeof zeros);
+        assert_int_equal(pg_replay_writer_add_checkpoint(&w, h, sections), PG_OK);
+        assert_int_equal(pg_replay_writer_add_checkpoint(&w, h, sections), PG_ERR_INVALID_ARGUMENT); /* not due */
+    }
     bad = pg_command_init(PG_CMD_NONE);
     {
         size_t before = w.size;
@@ -527,6 +572,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_writer_rejects),
+        cmocka_unit_test(test_compare_checkpoint),
         cmocka_unit_test(test_write_read_play),
         cmocka_unit_test(test_every_bit_flip),
         cmocka_unit_test(test_truncation),

@@ -76,6 +76,7 @@ static snapshot save(const pg_world *w)
 static void free_snapshot(snapshot *s) { t_free(s->bytes); s->bytes = NULL; s->size = 0; }
 
 static void section_ranges(const snapshot *s, size_t start[PG_SECTION_COUNT], size_t length[PG_SECTION_COUNT]);
+static int reseal(uint8_t *bytes, size_t size);
 
 static int same_snapshot(const snapshot *a, const snapshot *b) { return a->size == b->size && memcmp(a->bytes, b->bytes, a->size) == 0; }
 
@@ -486,7 +487,7 @@ static void test_corrupt_every_byte(void **state)
     uint8_t *copy;
     size_t i;
     size_t p;
-    uint32_t accepted = 0, refused = 0, resave_mismatches = 0, f;
+    uint32_t accepted = 0, refused = 0, resave_mismatches = 0, damaged_refused = 0, f;
     (void)state;
     /* the source has a pending force and a sleeping island */
     for (f = 0; f < 300 && pg_body_is_awake(src.t.w, src.box); ++f) assert_int_equal(pg_world_step(src.t.w), PG_OK);
@@ -503,6 +504,15 @@ static void test_corrupt_every_byte(void **state)
             pg_result r;
             memcpy(copy, s.bytes, s.size);
             copy[i] ^= patterns[p];
+            /* as damaged: the checksum refuses every change of one byte */
+            r = pg_world_snapshot_restore(dst.t.w, copy, s.size);
+            if (r != PG_ERR_INVALID_ARGUMENT || strstr(pg_world_last_error(dst.t.w), "offset") == NULL)
+                fail_msg("byte %d xor 0x%02x: restore returned %s (%s)", (int)i, patterns[p], pg_result_name(r), pg_world_last_error(dst.t.w));
+            if (pg_world_hash(dst.t.w) != h_dst) fail_msg("byte %d xor 0x%02x: a refused snapshot changed the world", (int)i, patterns[p]);
+            ++damaged_refused;
+            /* resealed (checksums recomputed, as a writer with a bug would): the structural
+             * validation refuses it, or it is a state a world can hold */
+            if (!reseal(copy, s.size)) continue;
             r = pg_world_snapshot_restore(dst.t.w, copy, s.size);
             if (r == PG_OK) {
                 ++accepted;
@@ -518,8 +528,10 @@ static void test_corrupt_every_byte(void **state)
             }
         }
     }
-    print_message("corrupt snapshot of %d bytes: %u flips refused, %u accepted (%u re-save differently)\n", (int)s.size, refused, accepted,
-                  resave_mismatches);
+    print_message("corrupt snapshot of %d bytes: all %u changed bytes refused by the checksum; resealed, %u refused by the "
+                  "structure, %u accepted (%u re-save differently)\n",
+                  (int)s.size, damaged_refused, refused, accepted, resave_mismatches);
+    PG_EXPECT_EQ(damaged_refused, s.size * sizeof patterns, "%s", "every changed byte is refused");
     /* the header is never accepted corrupted: magic, version, capacities */
     for (i = 0; i < 18; ++i) {
         memcpy(copy, s.bytes, s.size);
@@ -529,6 +541,44 @@ static void test_corrupt_every_byte(void **state)
     t_free(copy);
     free_snapshot(&s);
     free_snapshot(&dst_original);
+    free_world(&src.t);
+    free_world(&dst.t);
+}
+
+/* A damaged byte is refused with the offset of the section it lies in (its hash fails);
+ * a damaged checksum or header with their own offsets; a snapshot of another format
+ * version (here 3, sealed as a version-3 writer would not, but the version is read
+ * first) is named as such, not as damage. */
+static void test_damage_is_located_and_versions_named(void **state)
+{
+    mixed src = make_mixed(30), dst = make_mixed(60);
+    snapshot s = save(src.t.w);
+    size_t start[PG_SECTION_COUNT], length[PG_SECTION_COUNT];
+    uint64_t h = pg_world_hash(dst.t.w);
+    uint8_t *copy = (uint8_t *)t_malloc(s.size);
+    char want[96];
+    (void)state;
+    assert_non_null(copy);
+    section_ranges(&s, start, length);
+    memcpy(copy, s.bytes, s.size);
+    copy[start[PG_SECTION_BODIES] + length[PG_SECTION_BODIES] / 2] ^= 0x08;
+    assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INVALID_ARGUMENT);
+    snprintf(want, sizeof want, "at offset %u, section bodies", (unsigned)start[PG_SECTION_BODIES]);
+    if (strstr(pg_world_last_error(dst.t.w), want) == NULL) fail_msg("\"%s\" does not say \"%s\"", pg_world_last_error(dst.t.w), want);
+    memcpy(copy, s.bytes, s.size);
+    copy[s.size - 3] ^= 0x40;
+    assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INVALID_ARGUMENT);
+    snprintf(want, sizeof want, "at offset %u, field checksum", (unsigned)(s.size - 8));
+    if (strstr(pg_world_last_error(dst.t.w), want) == NULL) fail_msg("\"%s\" does not say \"%s\"", pg_world_last_error(dst.t.w), want);
+    memcpy(copy, s.bytes, s.size);
+    copy[4] = 3;
+    assert_true(reseal(copy, s.size));
+    assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INVALID_ARGUMENT);
+    assert_string_equal(pg_world_last_error(dst.t.w),
+                        "PG_ERR_INVALID_ARGUMENT: snapshot format version 3 at offset 4; this build reads version 4 only (save it again with this build)");
+    assert_true(pg_world_hash(dst.t.w) == h);
+    t_free(copy);
+    free_snapshot(&s);
     free_world(&src.t);
     free_world(&dst.t);
 }
@@ -637,6 +687,39 @@ static void le64(uint8_t *p, uint64_t v)
     put32(p + 4, (uint32_t)(v >> 32));
 }
 
+/* Recompute the section hashes and the checksum of a snapshot whose framing (section
+ * ids and lengths) is intact, so that restoring it tests the structural validation
+ * behind the checksum. Returns 0 (and changes nothing) when the framing is broken. */
+static int reseal(uint8_t *bytes, size_t size)
+{
+    size_t pos = 18, at[PG_SECTION_COUNT], len[PG_SECTION_COUNT];
+    int k;
+    for (k = 0; k < PG_SECTION_COUNT; ++k) {
+        if (size < pos + 5 || bytes[pos] != (uint8_t)k) return 0;
+        len[k] = get32(bytes + pos + 1);
+        at[k] = pos + 5;
+        if (len[k] > size - at[k] || size - at[k] - len[k] < 8) return 0;
+        pos = at[k] + len[k] + 8u;
+    }
+    if (pos + 8u != size) return 0;
+    for (k = 0; k < PG_SECTION_COUNT; ++k) le64(bytes + at[k] + len[k], pg_hash_bytes(PG_HASH_SEED, bytes + at[k], len[k]));
+    le64(bytes + size - 8u, pg_hash_bytes(PG_HASH_SEED, bytes, size - 8u));
+    return 1;
+}
+
+/* Restore a resealed copy of `bytes` (see reseal). */
+static pg_result restore_resealed(pg_world *w, const uint8_t *bytes, size_t size)
+{
+    uint8_t *copy = (uint8_t *)t_malloc(size);
+    pg_result r;
+    assert_non_null(copy);
+    memcpy(copy, bytes, size);
+    (void)reseal(copy, size);
+    r = pg_world_snapshot_restore(w, copy, size);
+    t_free(copy);
+    return r;
+}
+
 typedef struct corruption_run {
     test_world target;
     uint64_t hash;
@@ -654,7 +737,7 @@ static uint8_t *fresh_copy(corruption_run *r)
 
 static void expect_bytes_refused(corruption_run *r, const uint8_t *bytes, size_t size, const char *what)
 {
-    pg_result res = pg_world_snapshot_restore(r->target.w, bytes, size);
+    pg_result res = restore_resealed(r->target.w, bytes, size); /* the checksum would refuse it unsealed */
     if (res == PG_OK) {
         print_error("accepted: %s\n", what);
         r->accepted += 1;
@@ -672,7 +755,7 @@ static void expect_corruption_refused(corruption_run *r, const char *what) { exp
 /* A state a world can reach: restored (then the target is put back). */
 static void expect_bytes_accepted(corruption_run *r, const uint8_t *bytes, size_t size, const char *what)
 {
-    if (pg_world_snapshot_restore(r->target.w, bytes, size) != PG_OK) fail_msg("refused: %s: %s", what, pg_world_last_error(r->target.w));
+    if (restore_resealed(r->target.w, bytes, size) != PG_OK) fail_msg("refused: %s: %s", what, pg_world_last_error(r->target.w));
     assert_int_equal(pg_world_snapshot_restore(r->target.w, r->target_original.bytes, r->target_original.size), PG_OK);
 }
 
@@ -780,7 +863,7 @@ static void test_inconsistent_snapshots_refused(void **state)
         put32(c + end - 12, 0);
         put32(c + end - 8, 2049u);
         put32(c + end - 4, 0);
-        if (pg_world_snapshot_restore(r.target.w, c, s.size) != PG_OK) fail_msg("inertia 2049 refused: %s", pg_world_last_error(r.target.w));
+        if (restore_resealed(r.target.w, c, s.size) != PG_OK) fail_msg("inertia 2049 refused: %s", pg_world_last_error(r.target.w));
         assert_int_equal(pg_world_snapshot_restore(r.target.w, r.target_original.bytes, r.target_original.size), PG_OK);
     }
 
@@ -981,7 +1064,8 @@ static void expect_sections(const uint64_t before[PG_SECTION_COUNT], const uint6
 }
 
 /* Section byte ranges: "PGSN" u16 version, 3 x u32 capacities, then per section
- * u8 id, u32 length, bytes (the framing documented in src/state.c). */
+ * u8 id, u32 length, bytes, u64 hash, then the u64 checksum (the framing documented in
+ * src/state.c). */
 static void section_ranges(const snapshot *s, size_t start[PG_SECTION_COUNT], size_t length[PG_SECTION_COUNT])
 {
     size_t pos = 18;
@@ -993,9 +1077,9 @@ static void section_ranges(const snapshot *s, size_t start[PG_SECTION_COUNT], si
         PG_EXPECT_EQ(s->bytes[pos], k, "%s", "section id");
         length[k] = (size_t)s->bytes[pos + 1] | (size_t)s->bytes[pos + 2] << 8 | (size_t)s->bytes[pos + 3] << 16 | (size_t)s->bytes[pos + 4] << 24;
         start[k] = pos + 5;
-        pos = start[k] + length[k];
+        pos = start[k] + length[k] + 8u;
     }
-    PG_EXPECT_EQ(pos, s->size, "%s", "sections fill the snapshot");
+    PG_EXPECT_EQ(pos + 8u, s->size, "%s", "sections and the checksum fill the snapshot");
 }
 
 static void test_hashes_are_of_the_snapshot_encoding(void **state)
@@ -1195,7 +1279,7 @@ static void test_push_impulse_is_state(void **state)
         assert_int_equal(pg_world_step(t.w), PG_OK);
         if (pg_world_hash(t.w) != hashes[f]) fail_msg("frame %u differs after restoring frame %d", f, SAVED);
     }
-    assert_int_equal(pg_world_snapshot_restore(t.w, cleared.bytes, cleared.size), PG_OK);
+    assert_int_equal(restore_resealed(t.w, cleared.bytes, cleared.size), PG_OK);
     for (f = SAVED + 1; f <= FRAMES; ++f) assert_int_equal(pg_world_step(t.w), PG_OK);
     if (pg_world_hash(t.w) == hashes[FRAMES]) fail_msg("%s", "restored without its push impulses, the run still ends on the same hash");
     free_snapshot(&saved);
@@ -1245,6 +1329,7 @@ int main(void)
         cmocka_unit_test_teardown(test_save_errors, free_leftovers),
         cmocka_unit_test_teardown(test_capacity_mismatch, free_leftovers),
         cmocka_unit_test_teardown(test_corrupt_every_byte, free_leftovers),
+        cmocka_unit_test_teardown(test_damage_is_located_and_versions_named, free_leftovers),
         cmocka_unit_test_teardown(test_inconsistent_snapshots_refused, free_leftovers),
         cmocka_unit_test_teardown(test_hashes_are_of_the_snapshot_encoding, free_leftovers),
         cmocka_unit_test_teardown(test_section_hashes_and_diff, free_leftovers),

@@ -1567,12 +1567,18 @@ static int parse_int(const char *t, int *v)
     return 1;
 }
 
-static void usage(void)
+static void usage_to(FILE *f)
 {
-    fprintf(stderr, "usage: pogon-accuracy [--out DIR] [--quick] [--repeat N]\n"
-                    "       pogon-accuracy --render DIR [--section TITLE]\n"
-                    "       pogon-accuracy --worker SUBSTEPS HERTZ BITS PUSH_RAW RATE SLEEP CCD REPEAT\n");
+    fprintf(f, "usage: pogon-accuracy [--out DIR] [--quick] [--repeat N]\n"
+               "       pogon-accuracy --render DIR [--section TITLE]\n"
+               "       pogon-accuracy --worker SUBSTEPS HERTZ BITS PUSH_RAW RATE SLEEP CCD REPEAT\n"
+               "Measures the accuracy of each solver setting against a double reference and its time,\n"
+               "and prints the tables (to DIR/tables.md with --out). A full sweep runs every setting\n"
+               "--repeat times (default 3) and takes tens of seconds; --quick runs fewer settings once.\n"
+               "--render prints the tables of DIR/runs.tsv without measuring.\n"
+               "--worker is how the sweep runs settings built with another sine table.\n");
 }
+static void usage(void) { usage_to(stderr); }
 
 int main(int argc, char **argv)
 {
@@ -1643,6 +1649,12 @@ int main(int argc, char **argv)
     }
     describe_machine(g_run.machine, sizeof g_run.machine);
     for (i = 1; i < argc; ++i) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage_to(stdout);
+            return 0;
+        }
+    }
+    for (i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--out") == 0 && i + 1 < argc) outdir = argv[++i];
         else if (strcmp(argv[i], "--quick") == 0) quick = 1;
         else if (strcmp(argv[i], "--repeat") == 0 && i + 1 < argc && parse_int(argv[i + 1], &repeat) && repeat >= 1 &&
@@ -1653,6 +1665,8 @@ int main(int argc, char **argv)
     self_dir(argv[0], dir, sizeof dir);
     n = sweep(list, quick);
     fprintf(stderr, "pogon-accuracy: %d settings, %d repeat(s), this build's sine table: %d bits\n", n, repeat, PG_TRIG_TABLE_BITS);
+    if (argc == 1)
+        fprintf(stderr, "pogon-accuracy: running the full sweep (tens of seconds); --quick for a short run, --help for options\n");
     for (i = 0; i < n; ++i) {
         char label[128];
         setting b = balanced_setting();

@@ -189,7 +189,7 @@ static void print_sections(FILE *out, uint32_t mask)
             any = 1;
         }
     }
-    if (!any) fprintf(out, "(no single section: sections of another engine version?)");
+    if (!any) fprintf(out, "none differs (only the state hash, which the file checked against its section hashes)");
 }
 
 /* ---- a loaded replay ---------------------------------------------------------------- */
@@ -627,7 +627,12 @@ static int synctest_one(const char *path, uint32_t k)
             }
         }
     }
-    if (errors == 0) {
+    if (errors == 0 && rollbacks == 0) {
+        /* nothing was rolled back, so nothing was tested: a failure, not an OK */
+        fprintf(stderr, "%s: synctest tested nothing: --rollback %u is more than the file's %u frames (use 1..%u)\n", path, k,
+                r.player.frame, r.player.frame);
+        rc = EXIT_BAD;
+    } else if (errors == 0) {
         printf("%s: OK synctest rollback %u: %u frames, %u rollbacks, final hash %016llx\n", path, k, r.player.frame,
                rollbacks, (unsigned long long)pg_world_hash(w));
     } else {
@@ -1089,7 +1094,8 @@ static int resolve(const script *s, const script_cmd *sc, const tracker *t, pg_b
         id->generation = t->gen[sc->ref.a];
         return 1;
     case REF_LAST:
-        if (t->made_count == 0) return script_error(s, sc->line, "'last' before any create_body or make", NULL);
+        if (t->made_count == 0)
+            return script_error(s, sc->line, "'last' names no body: no create_body or make has succeeded before this line", NULL);
         *id = t->made[t->made_count - 1];
         return 1;
     case REF_MADE:
@@ -1137,16 +1143,23 @@ static int cmd_record(int argc, char **argv)
         else if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0) out_path = val;
         else if (strcmp(opt, "--frames") == 0) {
             frames = strtol(val, &end, 10);
-            if (*end != '\0' || frames < 0 || frames > 100000000L) frames = -2;
+            if (*end != '\0' || end == val || frames < 0 || frames > 100000000L) {
+                fprintf(stderr, "pogon-replay record: --frames wants a whole number 0..100000000, got '%s'\n", val);
+                return EXIT_BAD;
+            }
         } else if (strcmp(opt, "--checkpoint") == 0) {
             interval = strtol(val, &end, 10);
-            if (*end != '\0' || interval < 1 || interval > 100000000L) interval = -2;
+            if (*end != '\0' || end == val || interval < 1 || interval > 100000000L) {
+                fprintf(stderr, "pogon-replay record: --checkpoint wants a whole number 1..100000000 (frames between checkpoints), got '%s'\n", val);
+                return EXIT_BAD;
+            }
         } else {
             fprintf(stderr, "pogon-replay record: unknown option %s\n", opt);
             return EXIT_BAD;
         }
     }
-    if (scene_path == NULL || out_path == NULL || frames < 0 || interval < 1) {
+    if (scene_path == NULL || out_path == NULL || frames < 0) {
+        fprintf(stderr, "pogon-replay record: %s is required\n", scene_path == NULL ? "--scene SCENE" : out_path == NULL ? "-o FILE" : "--frames N");
         fprintf(stderr, "usage: pogon-replay record --scene SCENE --frames N [--script SCRIPT] [--checkpoint K] -o FILE\n");
         return EXIT_BAD;
     }
@@ -1175,6 +1188,25 @@ static int cmd_record(int argc, char **argv)
         (r = pg_scene_load(world, (const char *)scene_text, scene_size, &se)) != PG_OK) {
         fprintf(stderr, "%s: cannot load the scene: %s (%s)\n", scene_path, pg_result_name(r), se.message);
         return EXIT_BAD;
+    }
+
+    {   /* a scene without capacities holds exactly its own bodies and shapes: say so
+         * before the script's makes fail for want of room */
+        uint32_t bodies = 0, shapes = 0;
+        pg_world_stats st = pg_world_get_stats(world);
+        size_t k;
+        for (k = 0; k < sc.count; ++k) {
+            const pg_command *c = &sc.items[k].cmd;
+            if (c->kind == PG_CMD_CREATE_BODY) bodies++;
+            if (c->kind == PG_CMD_MAKE) bodies++, shapes += c->make_kind == PG_MAKE_STAR ? 2u : 1u;
+            if (c->kind == PG_CMD_ADD_SHAPE) shapes++;
+        }
+        if (st.body_count + bodies > def.max_bodies || st.shape_count + shapes > def.max_shapes)
+            fprintf(stderr,
+                    "%s: note: the scene has %u bodies and %u shapes with room for %u and %u (max_bodies, max_shapes; a "
+                    "scene that gives none has room for its own only); the script makes up to %u bodies and %u shapes, "
+                    "so some will fail with PG_ERR_CAPACITY: add max_bodies and max_shapes lines to the scene to make room\n",
+                    scene_path, st.body_count, st.shape_count, def.max_bodies, def.max_shapes, bodies, shapes);
     }
 
     memset(&t, 0, sizeof t);
