@@ -10,22 +10,8 @@ set -euo pipefail
 desktop=$1 replay=$2 scene=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
 file=$work/killed.pgr
-"$desktop" --scene "$scene" -o "$file" >"$work/log" 2>&1 &
-pid=$!
-trap 'kill -9 $pid 2>/dev/null || true' EXIT
-wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^pogon$' | head -n 1)
-xdotool windowfocus --sync "$wid" || true
-log=$work/log
-# Wait until the program's log holds COUNT lines matching PATTERN, so that a loaded
-# machine slows the test down instead of failing it.
-wait_for() { # PATTERN [COUNT]
-  local n=${2:-1}
-  for _ in $(seq 1 300); do
-    [ "$(grep -c -- "$1" "$log" || true)" -ge "$n" ] && return 0
-    sleep 0.1
-  done
-  echo "FAIL: waited 30 s for '$1' (x$n) in the program's output"; cat "$log"; exit 1
-}
+source "$(dirname "$0")/window_lib.sh"
+start_window "$work/log" "$desktop" --scene "$scene" -o "$file"
 xdotool key --window "$wid" 3; wait_for "tool ball"
 for x in 100 200 300 400 500 600 700; do
   xdotool mousemove --window "$wid" $x 200 click 1

@@ -10,22 +10,9 @@ set -euo pipefail
 desktop=$1 file=$2 work=$3
 rm -rf "$work"; mkdir -p "$work"
 log=$work/window.log
-"$desktop" --play "$file" -o "$work/live.pgr" --screenshot "$work/shot" >"$log" 2>&1 &
-pid=$!
-trap 'kill $pid 2>/dev/null || true' EXIT
-wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^pogon$' | head -n 1)
-xdotool windowfocus --sync "$wid" || true
+source "$(dirname "$0")/window_lib.sh"
+start_window "$log" "$desktop" --play "$file" -o "$work/live.pgr" --screenshot "$work/shot"
 act() { xdotool "$@"; sleep 0.4; }
-# Wait until the program's log holds COUNT lines matching PATTERN, so that a loaded
-# machine slows the test down instead of failing it.
-wait_for() { # PATTERN [COUNT]
-  local n=${2:-1}
-  for _ in $(seq 1 300); do
-    [ "$(grep -c -- "$1" "$log" || true)" -ge "$n" ] && return 0
-    sleep 0.1
-  done
-  echo "FAIL: waited 30 s for '$1' (x$n) in the program's output"; cat "$log"; exit 1
-}
 n=$("$desktop" --headless --play "$file" | sed -n 's/.*: frame \([0-9]*\) of \([0-9]*\),.*/\2/p')
 act key --window "$wid" space                                    # pause
 act key --window "$wid" End; wait_for "jumped to frame $n"       # jump to the last frame
@@ -33,10 +20,7 @@ act key --window "$wid" F12; wait_for "screenshot of frame" 1
 act key --window "$wid" Home; wait_for "jumped to frame 0"       # back to frame 0 (a kept snapshot)
 act key --window "$wid" n; wait_for "jumped to frame 1\$"        # one step: frame 1
 act key --window "$wid" F12; wait_for "screenshot of frame" 2
-act key --window "$wid" Escape
-for _ in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
-wait $pid
-trap - EXIT
+close_window
 cat "$log"
 mapfile -t shots < <(sed -n 's/.*screenshot of frame \([0-9]*\) written to \(.*\)$/\1 \2/p' "$log")
 [ ${#shots[@]} -eq 2 ] || { echo "FAIL: expected 2 screenshots, got ${#shots[@]}"; exit 1; }

@@ -10,28 +10,11 @@
 set -euo pipefail
 desktop=$1 replay=$2 scene=$3 work=$4
 rm -rf "$work"; mkdir -p "$work"
-"$desktop" --scene "$scene" -o "$work/s.pgr" >"$work/log" 2>&1 &
-pid=$!
-trap 'kill $pid 2>/dev/null || true' EXIT
-wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^pogon$' | head -n 1)
-xdotool windowfocus --sync "$wid" || true
-log=$work/log
-# Wait until the program's log holds COUNT lines matching PATTERN, so that a loaded
-# machine slows the test down instead of failing it.
-wait_for() { # PATTERN [COUNT]
-  local n=${2:-1}
-  for _ in $(seq 1 300); do
-    [ "$(grep -c -- "$1" "$log" || true)" -ge "$n" ] && return 0
-    sleep 0.1
-  done
-  echo "FAIL: waited 30 s for '$1' (x$n) in the program's output"; cat "$log"; exit 1
-}
+source "$(dirname "$0")/window_lib.sh"
+start_window "$work/log" "$desktop" --scene "$scene" -o "$work/s.pgr"
 sleep 1.5; xdotool key --window "$wid" F9; wait_for "now $work/s-2.pgr"
 sleep 1.5; xdotool key --window "$wid" Tab; wait_for "now $work/s-3.pgr"
-sleep 1.5; xdotool key --window "$wid" Escape
-for _ in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
-wait $pid
-trap - EXIT
+sleep 1.5; close_window
 cat "$work/log"
 for f in s s-2 s-3; do "$replay" verify "$work/$f.pgr"; done
 sub() { "$replay" info "$work/$1.pgr" | sed -n 's/^  step .*, \([0-9]*\) substeps.*/\1/p'; }

@@ -20,23 +20,9 @@ log=$work/window.log
 px() { awk -v x="$1" 'BEGIN { printf "%d", 480 + x * 22 }'; }
 py() { awk -v y="$1" 'BEGIN { printf "%d", 300 - (y - 9) * 22 }'; }
 
-"$desktop" --scene "$scene" -o "$work/session.pgr" --screenshot "$work/shot" >"$log" 2>&1 &
-pid=$!
-trap 'kill $pid 2>/dev/null || true' EXIT
-wid=$(timeout 20 xdotool search --sync --onlyvisible --name '^pogon$' | head -n 1)
-[ -n "$wid" ] || { echo "no window"; cat "$log"; exit 1; }
-xdotool windowfocus --sync "$wid" || true
+source "$(dirname "$0")/window_lib.sh"
+start_window "$log" "$desktop" --scene "$scene" -o "$work/session.pgr" --screenshot "$work/shot"
 act() { xdotool "$@"; sleep 0.25; }
-# Wait until the program's log holds COUNT lines matching PATTERN (the window prints the
-# app's messages), so that a loaded machine slows the test down instead of failing it.
-wait_for() { # PATTERN [COUNT]
-  local n=${2:-1}
-  for _ in $(seq 1 300); do
-    [ "$(grep -c -- "$1" "$log" || true)" -ge "$n" ] && return 0
-    sleep 0.1
-  done
-  echo "FAIL: waited 30 s for '$1' (x$n) in the program's output"; cat "$log"; exit 1
-}
 
 act key --window "$wid" 3; wait_for "tool ball"                                  # tool 3: ball
 act mousemove --window "$wid" "$(px -8)" "$(py 6)" click 1; wait_for "Added a ball"   # a ball at (-8, 6)
@@ -57,10 +43,7 @@ act key --window "$wid" p                                                       
 act key --window "$wid" F12; wait_for "screenshot of frame" 1                    # screenshot of frame F
 act key --window "$wid" n                                                        # one step
 act key --window "$wid" F12; wait_for "screenshot of frame" 2                    # screenshot of frame F + 1
-act key --window "$wid" Escape                                                   # close
-for _ in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
-wait $pid
-trap - EXIT
+close_window
 cat "$log"
 
 file=$work/session.pgr
