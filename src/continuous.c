@@ -7,7 +7,7 @@
  * one step brings other corners round to the surface, which no contact point tracks: a
  * box of 0.15-1.5 m thrown at 10-100 m/s and spinning at 160-300 rad/s passed through a
  * static wall 0.1 m thick in 40 of 2625 throws, and corners went up to a body's size
- * deep into a 1 m wall (session 8 sweep; test_spinning_box_meets_a_thin_wall).
+ * deep into a 1 m wall (without this sweep; test_spinning_box_meets_a_thin_wall).
  *
  * WHAT (Box2D v3's continuous step, for turning bodies): after the solve, a dynamic body
  * whose turn in the step, or the turn its angular velocity at the step's start would have

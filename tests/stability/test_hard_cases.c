@@ -172,7 +172,7 @@ static void test_tall_stack_settled_displacement(void **state)
 }
 
 /* =====================================================================================
- * Leaning column (docs/hard-cases.md, "Leaning column": a finding of session 7, open).
+ * Leaning column (docs/hard-cases.md, "Leaning column": an open finding).
  * The perfect column above stands because it is exactly symmetric. A column of 1 m boxes
  * each 1 mm to the right of the one below (the top 19 mm off: every part of it stands
  * with its centre of mass far inside its base) is held only by the soft contacts'
@@ -630,7 +630,7 @@ static void test_bullet_angled_dynamic_plank(void **state) { (void)state; expect
  * m/s and spinning at 160 .. 280 rad/s, from five distances, at a static wall 0.1 m thick
  * and 20 m tall, 120 steps each (420 throws). A box turning a large part of a turn per
  * step brings corners round that its speculative contact (made from the features facing
- * at the step's start) does not track; before session 8, 18 of these throws passed
+ * at the step's start) does not track; without the sweep of fast turns, 18 of these throws passed
  * through the wall and corners went up to 175 box sizes past its face. Asserted with
  * PG_EFFECT_CONTINUOUS, while the box is level with the wall:
  *   - its centre never passes the wall's far face;
@@ -764,8 +764,8 @@ static void test_spinning_box_meets_a_thin_wall(void **state)
 }
 
 /* The same throws with planks (6:1 boxes), capsules (radius an eighth of the length) and
- * triangles of 0.3, 0.6 and 1 m (1260 throws): none may pass the wall or pause. Before
- * session 8, 99 planks, 20 capsules and 12 triangles of these passed. Sweeping the shape
+ * triangles of 0.3, 0.6 and 1 m (1260 throws): none may pass the wall or pause. Without the
+ * sweep of fast turns, 99 planks, 20 capsules and 12 triangles of these passed. Sweeping the shape
  * and letting a touching core circle go on, as Box2D v3 does, still let 2 planks and 1
  * triangle through (a thin body spinning into the wall: its contacts, made for its
  * turning ends, did not push). Holding the core by putting the body back at its start
@@ -861,9 +861,9 @@ static void test_head_on_boxes(void **state)
  *   - and they rest side by side: every two neighbours' centres 1 m apart to within
  *     OVERLAP_TOL. Push-out beyond what holds a contact's load moves positions without
  *     becoming momentum (docs/solver-design.md, DEEP PUSH), so a box stops where its overlaps
- *     open; until session 9 the push-out was all velocity, the boxes slid on and ended
+ *     open; were the push-out all velocity, the boxes slid on and ended
  *     spread over 13 m, neighbours up to 1.99 m apart.
- * (Before session 5 the second point asserted every speed after the separation below
+ * (An earlier form of the second point asserted every speed after the separation below
  * 3.5 m/s, the per-contact cap applied to one box's speed: it held while the boxes took
  * 66 steps to separate, time enough for friction to slow the outer ones; solved
  * together, a face contact's two points push the boxes apart in 48 steps, while the
@@ -966,8 +966,8 @@ static void test_deep_overlap_separates(void **state)
 /* =====================================================================================
  * Overlapping column: 10 boxes of 1 m created on the ground in a column with centres
  * `gap` m apart (each overlaps the next by 1 - gap), sleeping off, 5 s. A contact pushes
- * its pair apart at up to contact_push_max (3 m/s), and until session 9 all of that was
- * velocity: box k rose at up to k times the cap while the overlaps opened, and nothing
+ * its pair apart at up to contact_push_max (3 m/s), and were all of that
+ * velocity, box k would rise at up to k times the cap while the overlaps opened, and nothing
  * took the momentum back (centres 0.5 m apart: 15.3 m/s, the top 8.4 m above where it
  * rests). Now only push_max / 32 of a contact's push-out beyond what holds its load
  * becomes velocity, the rest moves positions only (docs/solver-design.md, DEEP PUSH). Asserted,
@@ -1149,8 +1149,8 @@ static void test_bounce_energy_never_grows(void **state)
 /* A 1 m box dropped flat from 2.5 m (its bottom 2 m above the ground) with restitution
  * 1 and 0.5: the landing is symmetric about its centre line, so it must bounce straight
  * up and down without turning: |w| < 0.01 rad/s, |x| < 1 mm, tilt < 0.1 degrees over
- * 5 s. Before session 5 the restitution pass took the two contact points one after the
- * other, always point 0 first: with restitution 1 the box left the first bounce spinning
+ * 5 s. A restitution pass that takes the two contact points one after the other, always
+ * point 0 first, fails it: with restitution 1 the box left the first bounce spinning
  * at up to 11.7 rad/s and tumbled 1.5 m aside; with 0.5, 2.1 rad/s. */
 static void test_bounce_flat_box_does_not_turn(void **state)
 {

@@ -14,7 +14,7 @@
  *     within |x| < 14.5 m and above y = -0.5 m, and after 20 s above y = 0. (A light
  *     body pinched under a heavy one landing at 20 m/s is pressed into the ground for a
  *     few steps, its centre 0.28 m below the surface at worst in 400 piles, 0.043 m in
- *     500 since session 10's solver order: the light body cannot stop the heavy one in
+ *     500 with the solver's current order: the light body cannot stop the heavy one in
  *     one pass of the solver, docs/hard-cases.md. A body that passed through would end
  *     below the surface or fall on.)
  *   - the total mechanical energy (kinetic, rotational, and m g y) never exceeds its
@@ -27,13 +27,12 @@
  * oscillator: nothing in pogon resists rolling), a ball still rolling, part of a heap
  * still creeping at a few cm/s. How many is a matter of chance, since any change of the
  * numerics changes every bit of a pile: four other sets of 100 seeds gave 83 to 90, and
- * these seeds 90 now (session 10's solver order) and 92 before session 7's change of the
- * approach speed, so the bound sits three standard deviations below them. It still
+ * these seeds between 81 and 92 with the rounding and solver orders they have had, so the bound sits three standard deviations below them. It still
  * catches what it was written for: before a body's surface speed counted for sleep (island.c) 67 of these
  * 100 slept, small balls rolling at a few mm/s turning faster than 2 degrees/s.
  *
  * test_bouncy_piles: 40 of the same piles with every restitution 1, where the energy
- * must still never rise above its start. (Until session 7 it rose by up to 194 %: a
+ * must still never rise above its start. (A rebound that ignores this rose by up to 194 %: a
  * point that first pushed in a later substep rebounded from an approach speed that
  * other contacts' pushes had made in this step; docs/solver-design.md, APPROACH.) With nothing lost
  * at impacts the energy may gather in a light body and throw it over a wall, so
@@ -237,7 +236,7 @@ static void test_bouncy_piles(void **state)
  * capacity misses. Printed, not asserted: bodies that end outside the box. Over the ten
  * seed sets 42 of 12 000 bodies did (85 before the sweep), nearly all small bodies that
  * the pile squeezed or rammed through a wall, which the sweep of turning bodies against
- * static shapes does not cover (docs/hard-cases.md). Session 9's DEEP PUSH (push-out past
+ * static shapes does not cover (docs/hard-cases.md). DEEP PUSH (push-out past
  * a contact's hold moves positions only) did not change that rate: over these seeds and
  * nine more sets (seed + set * 104729), 31 bodies before it and 30 after; these seeds lose
  * 2 (none before). */
