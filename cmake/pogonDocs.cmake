@@ -5,6 +5,7 @@
 #                                every public function, type, field and enumerator is
 #                                documented
 #   test docs_readme_example     the README's C example compiles and runs against the library
+#   test docs_version_one_place  package.json and its lock name the version of version.h
 #   test docs_generated_regions  every generated table in README.md and docs/ is what its
 #                                tool renders from the committed results (tools/docs/regions.js)
 find_program(POGON_DOXYGEN doxygen)
@@ -56,4 +57,12 @@ if(POGON_TESTING AND NOT BUILD_SHARED_LIBS AND NOT CMAKE_CROSSCOMPILING)
             -DCC=${CMAKE_C_COMPILER} "-DCFLAGS=${CMAKE_C_FLAGS}" -DINCLUDE=${PROJECT_SOURCE_DIR}/include -DLIB=$<TARGET_FILE:pogon>
             -P ${PROJECT_SOURCE_DIR}/cmake/pogonReadmeExample.cmake)
   set_tests_properties(docs_readme_example PROPERTIES LABELS "docs" TIMEOUT 120)
+endif()
+
+# The version in its one place and in the JavaScript package, which cannot read it.
+if(POGON_TESTING)
+  add_test(NAME docs_version_one_place
+    COMMAND ${CMAKE_COMMAND} -DROOT=${PROJECT_SOURCE_DIR} -DVERSION=${PROJECT_VERSION}
+            -P ${PROJECT_SOURCE_DIR}/cmake/pogonVersionCheck.cmake)
+  set_tests_properties(docs_version_one_place PROPERTIES LABELS "docs" TIMEOUT 30)
 endif()
