@@ -72,13 +72,20 @@ static void test_playback_of_own_recording(void **state)
 
 static void test_playback_of_corpus_replay(void **state)
 {
-    pga_app *app = app_with_file("demo");
+    pga_app *app;
     size_t size;
-    uint8_t *data = read_whole(POGON_REPLAYS_DIR "/demo.pgr", &size);
+    uint8_t *data;
     pg_replay_info info;
     pga_playback pb;
     uint32_t bodies;
     (void)state;
+#if PG_TRIG_TABLE_BITS != 12
+    /* the corpus was recorded with the 12-bit sine table; another table steps (and loads
+     * turned bodies) differently, as tests/replay/CMakeLists.txt says for the corpus tests */
+    skip();
+#endif
+    app = app_with_file("demo");
+    data = read_whole(POGON_REPLAYS_DIR "/demo.pgr", &size);
     assert_int_equal(pg_replay_read(data, size, &info, NULL), PG_OK);
     assert_int_equal(pga_play_replay(app, data, size), PG_OK);
     pb = pga_playback_state(app);
