@@ -9,7 +9,9 @@
  * PG_HARD_LONG_RUN_STEPS overrides the length of the one-hour run (216 000 steps).
  *
  * Every test prints what it measured (print_message), so a regression shows before it
- * fails. Nothing here loosens a bound to pass: a failing case is a finding.
+ * fails, and every figure checked against a bound goes to the suite's results file
+ * (hard_results.h, docs/results/hard_cases.tsv). Nothing here loosens a bound to pass:
+ * a failing case is a finding.
  */
 #include "../unit/pg_test.h"
 
@@ -25,6 +27,12 @@
 #ifndef PG_HARD_GROUP
 #define PG_HARD_GROUP 1
 #endif
+#if PG_HARD_GROUP == 1
+#define HARD_PROGRAM "test_hard_cases"
+#else
+#define HARD_PROGRAM "test_hard_cases_slow"
+#endif
+#include "hard_results.h"
 #ifndef PG_HARD_LONG_RUN_STEPS
 #define PG_HARD_LONG_RUN_STEPS 216000
 #endif
@@ -84,9 +92,12 @@ PG_HARD_HELPER double speed(const pg_world *w, pg_body_id b)
 
 PG_HARD_HELPER double dist(pg_vec2 a, pg_vec2 b) { return hypot(fd(a.x) - fd(b.x), fd(a.y) - fd(b.y)); }
 
-/* Fail with a message when !(got <= bound); print the measured value either way. */
-PG_HARD_HELPER int within(double got, double bound, const char *what)
+/* 0 and a message when !(got <= bound); the figure goes to the results file either way
+ * (hard_results.h), named by `what` and the calling function. */
+#define within(got, bound, what) within_at(__func__, got, bound, what)
+PG_HARD_HELPER int within_at(const char *function, double got, double bound, const char *what)
 {
+    hard_figure(function, what, got, bound);
     if (!(got <= bound)) {
         print_error("%s: %.6g exceeds the bound %.6g\n", what, got, bound);
         return 0;
