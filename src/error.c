@@ -19,8 +19,7 @@ static const char *const result_messages[PG_RESULT_COUNT] = {
     "polygon vertices do not form a convex polygon: pass the convex hull",
     "the operation does not apply to this body type (e.g. a force on a static body)",
     "nothing was found",
-    "the file was made by a build with another numeric configuration, numerics version or format "
-    "version: use a build like the one that made it (the message names both), or upgrade an old format"};
+    "the file was made by another numeric configuration, numerics or format version: use a build like its maker's, or upgrade an old format"};
 
 const char *pg_result_name(pg_result r)
 {
