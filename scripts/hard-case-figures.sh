@@ -26,10 +26,13 @@ for p in "${programs[@]}"; do
   echo "hard-case-figures: $p" >&2
   POGON_HARD_RESULTS="$tmp" "$exe" > /dev/null
 done
+# the commit measured; "+changes" when the library or the tests differ from it
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+git diff --quiet HEAD -- src include tests/stability tests/unit tools/scenes 2>/dev/null || commit="$commit+changes"
 machine="$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -n 1), $(uname -sm)"
 {
   echo "# pogon hard-case figures: program, function, figure, value, bound ('-': printed, not asserted)"
-  echo "# measured: $(date -u +%Y-%m-%d), pogon $(git describe --always --dirty 2>/dev/null || echo unknown)"
+  echo "# measured: $(date -u +%Y-%m-%d), pogon $commit"
   echo "# machine: $machine"
   echo "# command: scripts/hard-case-figures.sh $build"
   cat "$tmp"

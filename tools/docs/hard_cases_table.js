@@ -7,7 +7,8 @@
 // The results file is what scripts/hard-case-figures.sh writes: '#' lines (what was run,
 // when, where), then one figure a line, tab-separated: program, function, figure, value,
 // bound ('-': printed, not asserted). --functions keeps the figures checked by those C
-// functions (a test or its helper), in the file's order; without it, every figure. The
+// functions (a test or its helper; PROGRAM:FUNCTION where two programs share a name), in
+// the file's order; without it, every figure. The
 // table ends with the line saying when, where and by which command the figures were
 // measured. docs/hard-cases.md holds its regions (docs/generated.md).
 'use strict';
@@ -46,10 +47,11 @@ text.split('\n').forEach((line, n) => {
 for (const key of ['measured', 'machine', 'command']) {
   if (!meta[key]) usage(`${results}: no '# ${key}: ...' line`);
 }
-const chosen = functions ? rows.filter((r) => functions.includes(r.fn)) : rows;
+const matches = (spec, r) => spec.includes(':') ? spec === `${r.program}:${r.fn}` : spec === r.fn;
+const chosen = functions ? rows.filter((r) => functions.some((spec) => matches(spec, r))) : rows;
 if (functions) {
-  for (const fn of functions) {
-    if (!rows.some((r) => r.fn === fn)) usage(`${results}: no figure checked by ${fn}`);
+  for (const spec of functions) {
+    if (!rows.some((r) => matches(spec, r))) usage(`${results}: no figure checked by ${spec}`);
   }
 }
 
