@@ -23,6 +23,7 @@
 static pga_app *g_app;
 /* The replay being played: the app may read it until the next replay is loaded. */
 static uint8_t *g_replay;
+static char g_recorded_with[160];
 static size_t g_recording_size;
 static char g_hash_text[17];
 
@@ -265,8 +266,22 @@ EXPORT int pgw_play_replay(uint8_t *data, int size)
     }
     free(g_replay);
     g_replay = data;
+    g_recorded_with[0] = '\0';
+    {
+        pg_replay_info info;
+        char config[96];
+        if (pg_replay_read(data, (size_t)size, &info, NULL) == PG_OK) {
+            pg_numeric_config_describe(info.numeric_config, config, sizeof config);
+            snprintf(g_recorded_with, sizeof g_recorded_with, "pogon %u.%u.%u, %s", info.engine_major,
+                     info.engine_minor, info.engine_patch, config);
+        }
+    }
     return PG_OK;
 }
+
+/* What recorded the replay being played: "pogon 0.2.0, a 12-bit sine table" (its engine
+ * version and numeric configuration, from its header, read when it was loaded), or "". */
+EXPORT const char *pgw_replay_recorded_with(void) { return g_recorded_with; }
 
 /* 0 active, 1 frame, 2 frame_count, 3 checkpoints_checked, 4 checkpoints_failed,
  * 5 last_match, 6 section_mismatch. */

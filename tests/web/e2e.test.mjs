@@ -353,6 +353,14 @@ test('playback: pause and single step move the frame counter by one', async () =
   await page.locator('#pb-speed').selectOption('1');
   await startShipped('replays/demo.pgr');
   await page.waitForFunction(() => window.pogon.playback().frame > 0);
+  // the panel says what recorded the file: the engine version and numeric configuration
+  // of its header (u16 major, minor, patch at byte 10; docs/formats.md)
+  const header = readFileSync(join(root, 'tests/replays/demo.pgr'));
+  const [major, minor, patch] = [10, 12, 14].map((at) => header.readUInt16LE(at));
+  const recordedWith = `pogon ${major}.${minor}.${patch}, a 12-bit sine table`;
+  await page.waitForFunction((want) => document.getElementById('pb-recorded').textContent === want, recordedWith)
+    .catch(() => {});
+  assert.equal(await page.locator('#pb-recorded').textContent(), recordedWith);
   await page.locator('#pb-run').click();
   await page.waitForFunction(() => window.pogon.paused());
   const f0 = (await hook(() => window.pogon.playback())).frame;

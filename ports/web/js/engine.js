@@ -182,4 +182,7 @@ class Engine {
     };
   }
   stopPlayback() { return this.m._pgw_stop_playback(); }
+  // "pogon 0.2.0, a 12-bit sine table": the engine version and numeric configuration
+  // that recorded the replay being played ('' when none).
+  replayRecordedWith() { return this.text(this.m._pgw_replay_recorded_with()); }
 }

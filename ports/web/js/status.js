@@ -146,6 +146,7 @@ export class Status {
       return;
     }
     this.checkpointMarks(p);
+    setText('pb-recorded', this.engine.replayRecordedWith() || '–');
     setText('pb-frame', String(p.frame));
     setText('pb-frames', String(p.frameCount));
     setText('pb-checked', String(p.checked));
