@@ -12,8 +12,8 @@ Cortex-M4 (hard-float ABI, where only -mgeneral-regs-only keeps gcc off the FPU
 registers) and Cortex-M0+, and measures:
   flash   text + data of each configuration (tools/size/*.c) minus a program without
           pogon (baseline.c): step-only circles and boxes (step_only.c), the core without
-          the file formats (every public function of every source file but scene_file.c
-          and replay_file.c kept with -u), everything (all public functions);
+          the file formats (every public function of every source file but scene_file.c,
+          replay_file.c and replay_upgrade.c kept with -u), everything (all public functions);
   RAM     pg_world_memory_size on the target (world_memory.c under qemu-system-arm);
   stack   the deepest call chain below pg_world_step and below each public function,
           from gcc's -fcallgraph-info=su (frame sizes as in the .su files; library
@@ -48,7 +48,7 @@ CPUS = {  # name: (flags, qemu board)
 COMMON = ["-mthumb", "-mgeneral-regs-only", "-Os", "-std=c99", "-ffunction-sections", "-fdata-sections",
           "-Iinclude", "-Isrc", "-DPG_TRIG_TABLE_BITS=12", "-DPG_FAST_DIV64=0"]
 LINK = ["-Wl,--gc-sections", "-nostartfiles", "--specs=nano.specs"]
-FILE_FORMATS = ("scene_file.c", "replay_file.c")
+FILE_FORMATS = ("scene_file.c", "replay_file.c", "replay_upgrade.c")
 # The issue's budgets (issue 30), KiB of flash.
 BUDGETS = {"step-only": 16, "core": 32, "everything": 64}
 CONFIG_TEXT = {
