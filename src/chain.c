@@ -2,10 +2,10 @@
  * neighbours so that collide.c can keep normals within the chain's own (no ghost bumps
  * at the joints). Everything is checked before the body is made. */
 #include "body.h"
+#include "chain.h"
 #include "error.h"
 #include "island.h"
 #include "shape.h"
-#include "text.h"
 
 /* The chain segment from point i to the next, with its neighbours (a missing neighbour
  * at an open chain's end is the segment's own end). */
@@ -17,15 +17,39 @@ static pg_result segment_of(const pg_vec2 *p, int32_t n, int loop, int32_t i, pg
     return pg_geometry_chain_segment(before, a, b, after, g);
 }
 
-static pg_result fail_at(pg_world *w, pg_result r, const char *what, int32_t i, const char *why)
+pg_result pg__chain_problem(const pg_vec2 *points, int32_t count, int loop, pg__text *why)
 {
-    char buf[144];
-    pg__text t = pg__text_in(buf, sizeof buf);
-    pg__text_put(&t, "pg_make_chain: ");
-    pg__text_put(&t, what);
-    pg__text_i64(&t, i);
-    pg__text_put(&t, why);
-    return pg__fail(w, r, buf);
+    int32_t i, segments;
+    if (loop ? (count < 3 || count > PG_CHAIN_MAX_POINTS - 1) : (count < 2 || count > PG_CHAIN_MAX_POINTS)) {
+        pg__text_put(why, "a chain has 2..65 points (a loop 3..64), got ");
+        pg__text_i64(why, count);
+        return PG_ERR_INVALID_ARGUMENT;
+    }
+    for (i = 0; i < count; ++i)
+        if (points[i].x < -PG_FIX_C(1000) || points[i].x > PG_FIX_C(1000) || points[i].y < -PG_FIX_C(1000) || points[i].y > PG_FIX_C(1000)) {
+            pg__text_put(why, "point ");
+            pg__text_i64(why, i);
+            pg__text_put(why, " lies beyond 1000 m of the body origin");
+            return PG_ERR_ENVELOPE;
+        }
+    segments = loop ? count : count - 1;
+    for (i = 0; i < segments; ++i) {
+        pg_geometry g;
+        if (segment_of(points, count, loop, i, &g) != PG_OK) {
+            pg__text_put(why, "segment ");
+            pg__text_i64(why, i);
+            pg__text_put(why, " (from point ");
+            pg__text_i64(why, i);
+            pg__text_put(why, " to the next) is shorter than 0.01 m");
+            return PG_ERR_DEGENERATE;
+        }
+    }
+    return PG_OK;
+}
+
+void pg__chain_segment(const pg_vec2 *points, int32_t count, int loop, int32_t i, pg_geometry *out)
+{
+    (void)segment_of(points, count, loop, i, out);
 }
 
 pg_result pg_make_chain(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, const pg_vec2 *points, int32_t count, int loop,
@@ -41,17 +65,14 @@ pg_result pg_make_chain(pg_world *w, const pg_body_def *bd, const pg_shape_def *
                                         : points == NULL ? "pg_make_chain: points is NULL" : "pg_make_chain: out is NULL");
     out->index = 0;
     out->generation = 0;
-    if (loop ? (count < 3 || count > PG_CHAIN_MAX_POINTS - 1) : (count < 2 || count > PG_CHAIN_MAX_POINTS))
-        return fail_at(w, PG_ERR_INVALID_ARGUMENT, "a chain has 2..65 points (a loop 3..64), got ", count, "");
-    segments = loop ? count : count - 1;
-    for (i = 0; i < count; ++i)
-        if (points[i].x < -PG_FIX_C(1000) || points[i].x > PG_FIX_C(1000) || points[i].y < -PG_FIX_C(1000) || points[i].y > PG_FIX_C(1000))
-            return fail_at(w, PG_ERR_ENVELOPE, "point ", i, " lies beyond 1000 m of the body origin");
-    for (i = 0; i < segments; ++i) {
-        pg_geometry g;
-        if (segment_of(points, count, loop, i, &g) != PG_OK)
-            return fail_at(w, PG_ERR_DEGENERATE, "segment ", i, " (from its point to the next) is shorter than 0.01 m");
+    {
+        char buf[144];
+        pg__text why = pg__text_in(buf, sizeof buf);
+        pg__text_put(&why, "pg_make_chain: ");
+        r = pg__chain_problem(points, count, loop, &why);
+        if (r != PG_OK) return pg__fail(w, r, buf);
     }
+    segments = loop ? count : count - 1;
     def = *bd;
     def.type = PG_BODY_STATIC; /* terrain: whatever bd says */
     def.linear_velocity = pg_v2_zero();
