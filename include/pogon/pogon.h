@@ -3,7 +3,8 @@
  *
  * WHAT IT IS
  *   Bodies made of convex shapes (circle, capsule, segment, box, convex polygon up to 8
- *   vertices) collide, stack, slide and bounce. Everything is integer arithmetic
+ *   vertices; a concave polygon becomes its convex pieces, terrain a chain of one-sided
+ *   segments: pg_make_concave, pg_make_chain) collide, stack, slide and bounce. Everything is integer arithmetic
  *   (Q16.16, see fixed.h), so a world stepped with the same inputs gives the same bits
  *   on every compiler and CPU.
  *
