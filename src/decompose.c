@@ -4,9 +4,9 @@
  * 1. Validation: 3..PG_CONCAVE_MAX_VERTICES vertices within 1000 m, no repeated point,
  *    no edge under 0.005 m, no vertex on the line through its neighbours, no two
  *    non-adjacent edges touching (so the polygon is simple and has area).
- * 2. Ear clipping on the counter-clockwise order, starting at input vertex 0: the
- *    cursor walks forward until its vertex is an ear (strictly convex, no other vertex
- *    in or on its triangle), clips it and moves on to the next vertex.
+ * 2. Ear clipping on the counter-clockwise order from input vertex 0: each round clips
+ *    the ear (strictly convex, no other vertex in or on its triangle) whose triangle is
+ *    thickest, the first counted from vertex 0 on ties.
  * 3. Hertel-Mehlhorn: two pieces that share an edge are merged while their union is
  *    strictly convex with at most PG_MAX_VERTICES vertices, pieces in creation order.
  * 4. A piece that pg_geometry_polygon refuses (thinner than 0.01 m: ear clipping leaves
@@ -134,12 +134,30 @@ static int is_ear(const pg_vec2 *v, const uint8_t *ord, const uint8_t *prv, cons
 {
     int p = prv[k], q = nxt[k], r;
     pg_vec2 a = v[ord[p]], b = v[ord[k]], c = v[ord[q]];
-    if (cross3(a, b, c) <= 0) return 0;
     for (r = nxt[q]; r != p; r = nxt[r]) {
         pg_vec2 x = v[ord[r]];
         if (cross3(a, b, x) >= 0 && cross3(b, c, x) >= 0 && cross3(c, a, x) >= 0) return 0;
     }
     return 1;
+}
+
+static int64_t dist2(pg_vec2 a, pg_vec2 b)
+{
+    int64_t dx = (int64_t)b.x - a.x, dy = (int64_t)b.y - a.y;
+    return dx * dx + dy * dy; /* < 2^57 */
+}
+
+/* The triangle's smallest height (raw units, rounded down): twice its area over its
+ * longest side; -1 when it is not strictly convex at b. */
+static int64_t thickness(pg_vec2 a, pg_vec2 b, pg_vec2 c)
+{
+    int64_t twice = cross3(a, b, c), l2 = dist2(a, b), m;
+    if (twice <= 0) return -1;
+    m = dist2(b, c);
+    l2 = m > l2 ? m : l2;
+    m = dist2(c, a);
+    l2 = m > l2 ? m : l2;
+    return twice / (int64_t)pg_isqrt64((uint64_t)l2); /* the longest side is >= 1 raw unit */
 }
 
 static void put_triangle(pg__decomposition *out, uint8_t a, uint8_t b, uint8_t c)
@@ -151,61 +169,72 @@ static void put_triangle(pg__decomposition *out, uint8_t a, uint8_t b, uint8_t c
     p->index[2] = c;
 }
 
+/* Each round clips the thickest ear (the ear whose triangle has the largest smallest
+ * height; on ties the first from position 0, counter-clockwise): thin ears, which a
+ * first-found rule takes along a gently curved edge, are left for last, when merging
+ * absorbs them. */
 static pg_result clip_ears(const pg_vec2 *v, int32_t n, int64_t area2, pg__decomposition *out, pg__text *why)
 {
     uint8_t ord[PG_CONCAVE_MAX_VERTICES], prv[PG_CONCAVE_MAX_VERTICES], nxt[PG_CONCAVE_MAX_VERTICES];
-    int32_t k, remaining = n, tries = 0;
+    int32_t k, remaining = n, first = 0;
     for (k = 0; k < n; ++k) {
         ord[k] = (uint8_t)(area2 > 0 ? k : (n - k) % n); /* counter-clockwise from vertex 0 */
         prv[k] = (uint8_t)((k + n - 1) % n);
         nxt[k] = (uint8_t)((k + 1) % n);
     }
     out->count = 0;
-    k = 0;
     while (remaining > 3) {
-        if (is_ear(v, ord, prv, nxt, k)) {
-            int p = prv[k], q = nxt[k];
-            put_triangle(out, ord[p], ord[k], ord[q]);
-            nxt[p] = (uint8_t)q;
-            prv[q] = (uint8_t)p;
-            --remaining;
-            k = q;
-            tries = 0;
-        } else {
-            k = nxt[k];
-            if (++tries > remaining) { /* a simple polygon always has an ear */
-                pg__text_put(why, "no ear found (the polygon is not simple)");
-                return PG_ERR_INVALID_ARGUMENT;
+        int32_t best = -1, i;
+        int64_t best_t = -1;
+        for (i = 0, k = first; i < remaining; ++i, k = nxt[k]) {
+            int64_t t = thickness(v[ord[prv[k]]], v[ord[k]], v[ord[nxt[k]]]);
+            if (t > best_t && is_ear(v, ord, prv, nxt, k)) {
+                best_t = t;
+                best = k;
             }
         }
+        if (best < 0) { /* a simple polygon always has an ear */
+            pg__text_put(why, "no ear found (the polygon is not simple)");
+            return PG_ERR_INVALID_ARGUMENT;
+        }
+        {
+            int p = prv[best], q = nxt[best];
+            put_triangle(out, ord[p], ord[best], ord[q]);
+            nxt[p] = (uint8_t)q;
+            prv[q] = (uint8_t)p;
+            if (best == first) first = q;
+            --remaining;
+        }
     }
-    put_triangle(out, ord[prv[k]], ord[k], ord[nxt[k]]);
+    put_triangle(out, ord[prv[first]], ord[first], ord[nxt[first]]);
     return PG_OK;
 }
 
 /* ---- merging ------------------------------------------------------------------------------ */
 
 /* The union of pieces a and b if they share an edge, as a vertex cycle in u (up to
- * 2 PG_MAX_VERTICES - 2); returns its count, 0 when they share none or the union is not
- * strictly convex. */
-static int unite(const pg_vec2 *v, const pg__piece *a, const pg__piece *b, uint8_t *u)
+ * 2 PG_MAX_VERTICES - 2); returns its count, 0 when they share none. */
+static int unite(const pg__piece *a, const pg__piece *b, uint8_t *u)
 {
-    int i, j, m = 0;
+    int i, j, k, m = 0;
     for (i = 0; i < a->count; ++i) {
         uint8_t x = a->index[i], y = a->index[(i + 1) % a->count];
         for (j = 0; j < b->count; ++j) {
             if (b->index[j] != y || b->index[(j + 1) % b->count] != x) continue;
-            {
-                int k;
-                for (k = 1; k <= a->count; ++k) u[m++] = a->index[(i + k) % a->count]; /* y .. x */
-                for (k = 2; k < b->count; ++k) u[m++] = b->index[(j + k) % b->count];  /* after x .. before y */
-                for (k = 0; k < m; ++k)
-                    if (cross3(v[u[(k + m - 1) % m]], v[u[k]], v[u[(k + 1) % m]]) <= 0) return 0;
-                return m;
-            }
+            for (k = 1; k <= a->count; ++k) u[m++] = a->index[(i + k) % a->count]; /* y .. x */
+            for (k = 2; k < b->count; ++k) u[m++] = b->index[(j + k) % b->count];  /* after x .. before y */
+            return m;
         }
     }
     return 0;
+}
+
+static int strictly_convex(const pg_vec2 *v, const uint8_t *u, int m)
+{
+    int k;
+    for (k = 0; k < m; ++k)
+        if (cross3(v[u[(k + m - 1) % m]], v[u[k]], v[u[(k + 1) % m]]) <= 0) return 0;
+    return 1;
 }
 
 static void set_piece(pg__piece *p, const uint8_t *u, int from, int count, int m)
@@ -230,8 +259,8 @@ static void merge_pieces(const pg_vec2 *v, pg__decomposition *d)
     while (a < d->count) {
         int merged = 0;
         for (b = a + 1; b < d->count && !merged; ++b) {
-            int m = unite(v, &d->pieces[a], &d->pieces[b], u);
-            if (m == 0 || m > PG_MAX_VERTICES) continue;
+            int m = unite(&d->pieces[a], &d->pieces[b], u);
+            if (m == 0 || m > PG_MAX_VERTICES || !strictly_convex(v, u, m)) continue;
             set_piece(&d->pieces[a], u, 0, m, m);
             drop_piece(d, b);
             merged = 1;
@@ -240,25 +269,31 @@ static void merge_pieces(const pg_vec2 *v, pg__decomposition *d)
     }
 }
 
+/* A piece pg_geometry_polygon accepts as it is: counter-clockwise (it would turn a
+ * clockwise one round), convex, edges of 0.005 m, 0.01 m thick. */
 static int piece_ok(const pg_vec2 *v, const pg__piece *p)
 {
     pg_geometry g;
     pg_vec2 w[PG_MAX_VERTICES];
+    int64_t twice = 0;
     int k;
     for (k = 0; k < p->count; ++k) w[k] = v[p->index[k]];
-    return pg_geometry_polygon(w, p->count, &g) == PG_OK;
+    for (k = 1; k + 1 < p->count; ++k) twice += cross3(w[0], w[k], w[k + 1]);
+    return twice > 0 && pg_geometry_polygon(w, p->count, &g) == PG_OK;
 }
 
-/* Piece a is refused (a sliver): merge it into a neighbour, or split their union again
- * where both parts are valid. Returns whether it did. */
+/* Piece a is refused (a sliver): merge it into a neighbour, or split their union (which
+ * need not be convex) again along another diagonal where both parts are valid: two
+ * convex counter-clockwise parts of the union's cycle tile it, their diagonal inside.
+ * Returns whether it did. */
 static int repair(const pg_vec2 *v, pg__decomposition *d, int a)
 {
     uint8_t u[2 * PG_MAX_VERTICES];
     int b, i, len;
     for (b = 0; b < d->count; ++b) {
-        int m = b == a ? 0 : unite(v, &d->pieces[a], &d->pieces[b], u);
+        int m = b == a ? 0 : unite(&d->pieces[a], &d->pieces[b], u);
         if (m == 0) continue;
-        if (m <= PG_MAX_VERTICES) {
+        if (m <= PG_MAX_VERTICES && strictly_convex(v, u, m)) {
             pg__piece whole;
             set_piece(&whole, u, 0, m, m);
             if (!piece_ok(v, &whole)) continue;

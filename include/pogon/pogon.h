@@ -371,10 +371,10 @@ pg_result pg_geometry_chain_segment(pg_vec2 before, pg_vec2 a, pg_vec2 b, pg_vec
  * equal points, no three consecutive points on a line, no two edges crossing or
  * touching) into convex pieces of at most PG_MAX_VERTICES vertices, each one that
  * pg_geometry_polygon accepts (counter-clockwise, at least 0.01 m thick), whose areas
- * add up exactly to the polygon's. Ear clipping in exact integer arithmetic from
- * vertex 0, walking counter-clockwise, then merging neighbouring pieces while they stay
- * convex (Hertel-Mehlhorn): the result is a pure function of the input
- * (docs/concave.md). Writes *piece_count pieces to `pieces` (`capacity` of them;
+ * add up exactly to the polygon's. Ear clipping in exact integer arithmetic (the
+ * thickest ear first, counted counter-clockwise from vertex 0 on ties), then merging
+ * neighbouring pieces while they stay convex (Hertel-Mehlhorn): the result is a pure
+ * function of the input (docs/concave.md). Writes *piece_count pieces to `pieces` (`capacity` of them;
  * PG_CONCAVE_MAX_PIECES always suffice). Refuses with PG_ERR_INVALID_ARGUMENT (count,
  * edges that cross or touch), PG_ERR_DEGENERATE (repeated point, collinear vertex, edge
  * under 0.005 m), PG_ERR_ENVELOPE (a vertex beyond 1000 m, a part thinner than 0.01 m),

@@ -81,6 +81,39 @@ static void reverse(pg_vec2 *v, int32_t n)
     }
 }
 
+static void check_pieces(const pg_vec2 *v, int32_t n);
+
+/* Random star-shaped polygons (vertices at increasing angles, so always simple): each
+ * is split into valid pieces whose areas add up, or refused only for thinness (or, by
+ * chance, a collinear vertex). Seeded: a failure reproduces. */
+static void test_random_polygons(void **state)
+{
+    pgt_rng rng = pgt_rng_seed(28);
+    int round, split = 0;
+    (void)state;
+    for (round = 0; round < 400; ++round) {
+        pg_vec2 v[PG_CONCAVE_MAX_VERTICES];
+        pg_geometry pieces[PG_CONCAVE_MAX_PIECES];
+        int32_t n = 3 + (int32_t)pgt_below(&rng, PG_CONCAVE_MAX_VERTICES - 2), i, count;
+        double scale = 0.05 + 10.0 * pgt_unit(&rng);
+        char msg[160];
+        pg_result r;
+        for (i = 0; i < n; ++i) {
+            double a = 2 * PGT_PI * (i + 0.8 * pgt_unit(&rng)) / n, rad = scale * (0.2 + pgt_unit(&rng));
+            v[i] = pg_v2(fx(rad * cos(a)), fx(rad * sin(a)));
+        }
+        r = pg_geometry_decompose(v, n, pieces, PG_CONCAVE_MAX_PIECES, &count, msg, sizeof msg);
+        if (r == PG_OK) {
+            check_pieces(v, n);
+            ++split;
+        } else if (r != PG_ERR_ENVELOPE && r != PG_ERR_DEGENERATE) {
+            fail_msg("round %d, %d vertices: %s %s", round, n, pg_result_name(r), msg);
+        }
+    }
+    /* most are thick enough: the test is not passing by refusing everything */
+    PG_EXPECT_LE(200, split, "%s", "polygons split");
+}
+
 static void check_pieces(const pg_vec2 *v, int32_t n)
 {
     pg_geometry pieces[PG_CONCAVE_MAX_PIECES];
@@ -314,6 +347,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pieces_convex_and_areas_add_up),
         cmocka_unit_test(test_winding_gives_same_pieces),
+        cmocka_unit_test(test_random_polygons),
         cmocka_unit_test(test_refusals),
         cmocka_unit_test(test_body_mass_is_the_polygons),
         cmocka_unit_test(test_failing_make_changes_nothing),
