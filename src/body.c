@@ -409,6 +409,9 @@ pg_result pg_body_set_type(pg_world *world, pg_body_id id, pg_body_type type)
     if (type != PG_BODY_STATIC) { /* a static body's shapes may reach farther than a moving body's */
         uint32_t s;
         for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next)
+            if (world->shapes[s].geometry.kind == PG_SHAPE_CHAIN_SEGMENT)
+                return pg__fail(world, PG_ERR_BODY_TYPE, "a body with chain segments stays static (terrain)");
+        for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next)
             if (pg__geometry_reach(&world->shapes[s].geometry) > pg__body_reach_limit(type))
                 return pg__fail_reach(world, pg__geometry_reach(&world->shapes[s].geometry), type);
     }

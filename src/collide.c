@@ -620,6 +620,92 @@ static void pg__collide_polygons(const pg_geom *a, const pg_geom *b, pg_fix spec
     if (out->count == 0) out->normal = pg__dir(0, 0);
 }
 
+/* ---- chain segment ------------------------------------------------------------------------
+ * The ideas of Box2D v3's chain segments ("smooth segments"), for integers. A chain
+ * segment v0 -> v1 is one-sided: it collides on the side of its face normal n1
+ * (normals[0]). At each joint the neighbour decides which normals the segment may give:
+ * at a convex joint (the chain turns towards n1 by more than CHAIN_FLAT) the cone
+ * between the neighbour's normal and n1; at a flat or concave joint none but n1. The
+ * plain segment's manifold is computed first; a normal outside the cone on the
+ * neighbour's side beyond its normal is left to the neighbour (skip), any other normal
+ * outside the cone is replaced by n1 ("snap": the other shape's incident edge clipped to
+ * the segment's side planes, or a circle's centre between them). A box sliding over a
+ * flat joint thus meets two faces with the same normal and never the end of the next
+ * segment. An end with no neighbour is an ordinary rounded end. */
+
+/* Joints whose turn has a sine below 2^-7 (0.45 degrees) count as flat: Q60. */
+#define PG__CHAIN_FLAT ((int64_t)1 << 53)
+
+static int64_t pg__cross60(pg_dir a, pg_dir b) { return (int64_t)a.x * b.y - (int64_t)a.y * b.x; }
+static int64_t pg__dot60(pg_dir a, pg_dir b) { return (int64_t)a.x * b.x + (int64_t)a.y * b.y; }
+
+/* The right-hand unit normal of the edge from a to b. */
+static pg_dir pg__edge_normal(pg_vec2 a, pg_vec2 b) { return pg_dir_normalize((int64_t)b.y - a.y, -((int64_t)b.x - a.x)); }
+
+/* The manifold against the face normal n1 of seg alone (see above). */
+static void pg__chain_snap(const pg_geom *seg, const pg_geom *other, pg_fix speculative, pg_manifold *out)
+{
+    pg_dir n1 = seg->normals[0], t1 = pg__tangent(n1);
+    int64_t radius = (int64_t)seg->radius + other->radius, rdiff = (int64_t)seg->radius - other->radius;
+    int32_t k;
+    pg__clear(out);
+    if (other->count == 1) {
+        pg_vec2 c = other->vertices[0], v0 = seg->vertices[0], v1 = seg->vertices[1];
+        pg_fix s16;
+        if (pg__dot46((int64_t)c.x - v0.x, (int64_t)c.y - v0.y, t1) < 0 || pg__dot46((int64_t)v1.x - c.x, (int64_t)v1.y - c.y, t1) < 0)
+            return; /* beyond a side plane: the neighbour's */
+        s16 = pg__q16_of2(pg__sep2(c, n1, pg__face_off2(seg, 0)));
+        if ((int64_t)s16 - radius > speculative) return;
+        out->normal = n1;
+        pg__push(out, pg__add_half(c, n1, rdiff - s16), (int64_t)s16 - radius, PG__ID(PG__KIND_FACE_A, 0, 0));
+    } else {
+        pg__clip c;
+        pg__clip_edge(seg, 0, other, pg__incident_edge(other, n1), rdiff, &c);
+        if (c.miss) return;
+        if (c.count == 2 && pg_v2_equal(c.p[0], c.p[1])) c.count = 1;
+        out->normal = n1;
+        for (k = 0; k < c.count; ++k)
+            if (c.sep[k] - radius <= speculative) pg__push(out, c.p[k], c.sep[k] - radius, PG__ID(PG__KIND_FACE_A, 0, c.iv[k]));
+    }
+    if (out->count == 0) out->normal = pg__dir(0, 0);
+}
+
+void pg_collide_chain(const pg_geom *seg, const pg_vec2 *before, const pg_vec2 *after, const pg_geom *other, pg_fix speculative,
+                      pg_manifold *out)
+{
+    pg_vec2 v0 = seg->vertices[0], v1 = seg->vertices[1], c = other->centroid;
+    pg_dir n1 = seg->normals[0], t1 = pg__tangent(n1), n0 = n1, n2 = n1, nrm;
+    int convex0 = 0, convex2 = 0, tail;
+    pg__clear(out);
+    if (seg->count != 2 || other->count < 1 || other->count > PG_MAX_POLYGON_VERTICES) return;
+    if (speculative < 0) speculative = 0;
+    if (before != NULL) {
+        n0 = pg__edge_normal(*before, v0);
+        convex0 = pg__cross60(pg__tangent(n0), t1) > PG__CHAIN_FLAT;
+    }
+    if (after != NULL) {
+        n2 = pg__edge_normal(v1, *after);
+        convex2 = pg__cross60(t1, pg__tangent(n2)) > PG__CHAIN_FLAT;
+    }
+    /* one-sided: nothing for a shape whose centre is behind every face the joint has */
+    if (pg__dot46((int64_t)c.x - v0.x, (int64_t)c.y - v0.y, n1) < 0 &&
+        !(convex0 && pg__dot46((int64_t)c.x - v0.x, (int64_t)c.y - v0.y, n0) >= 0) &&
+        !(convex2 && pg__dot46((int64_t)c.x - v1.x, (int64_t)c.y - v1.y, n2) >= 0))
+        return;
+    pg_collide(seg, other, speculative, out);
+    if (out->count == 0) return;
+    nrm = out->normal;
+    if (nrm.x == n1.x && nrm.y == n1.y) return; /* the face itself */
+    tail = pg__dot60(nrm, t1) <= 0;
+    if (tail ? before == NULL : after == NULL) return; /* the chain's rounded end */
+    if (tail ? convex0 : convex2) {
+        int64_t beyond = tail ? pg__cross60(nrm, n0) : pg__cross60(n2, nrm);
+        if (beyond > PG__CHAIN_FLAT) pg__clear(out); /* the neighbour's */
+        return;                                         /* else within the joint's cone */
+    }
+    pg__chain_snap(seg, other, speculative, out);
+}
+
 /* ---- entry points ------------------------------------------------------------------------ */
 
 void pg_collide(const pg_geom *a, const pg_geom *b, pg_fix speculative, pg_manifold *out)

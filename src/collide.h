@@ -20,6 +20,15 @@ typedef struct pg_manifold {
  * `speculative` (>= 0) are reported. count == 0 when they are farther apart. */
 void pg_collide(const pg_geom *a, const pg_geom *b, pg_fix speculative, pg_manifold *out);
 
+/* The manifold of a chain segment against another geometry (not a chain segment): seg
+ * is the placed segment (count 2; it collides on the side of normals[0], the right of
+ * vertices[0] -> vertices[1]), before and after its neighbours in the same frame (NULL
+ * where the chain ends). Normals outside the cone the neighbours allow at a joint are
+ * left to the neighbour or replaced by the face normal, so a body sliding across a
+ * joint meets no corner. The normal points from the segment to `other`. */
+void pg_collide_chain(const pg_geom *seg, const pg_vec2 *before, const pg_vec2 *after, const pg_geom *other, pg_fix speculative,
+                      pg_manifold *out);
+
 /* Signed distance-style overlap test used by queries: nonzero when a and b overlap
  * (separation < 0). */
 int pg_geom_overlap(const pg_geom *a, const pg_geom *b);

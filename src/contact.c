@@ -34,6 +34,45 @@ static pg_fix mix_restitution(pg_fix a, pg_fix b) { return a > b ? a : b; }
 /* The sort key (shape_a, shape_b) as one number. */
 static uint64_t pair_key(uint32_t sa, uint32_t sb) { return ((uint64_t)sa << 32) | sb; }
 
+/* The neighbours of chain segment s in the world frame (NULL where the chain ends). */
+static const pg_vec2 *chain_neighbour(const pg_world *w, const pg_shape *s, int which, pg_vec2 *at)
+{
+    const pg_body *b = &w->bodies[s->body];
+    pg_vec2 local = s->geometry.vertices[2 + which], end = s->geometry.vertices[which];
+    if (local.x == end.x && local.y == end.y) return NULL;
+    *at = pg_geom_place_point(local, b->origin, b->rot);
+    return at;
+}
+
+/* The manifold of shapes sa and sb, A to B: chain segments keep to their neighbours'
+ * normals and do not collide with each other (collide.h). */
+static void collide_shapes(const pg_world *w, uint32_t sa, uint32_t sb, pg_fix speculative, pg_manifold *m)
+{
+    const pg_shape *a = &w->shapes[sa], *b = &w->shapes[sb];
+    int chain_a = a->geometry.kind == PG_SHAPE_CHAIN_SEGMENT, chain_b = b->geometry.kind == PG_SHAPE_CHAIN_SEGMENT;
+    if (!chain_a && !chain_b) {
+        pg_collide(&w->world_geoms[sa], &w->world_geoms[sb], speculative, m);
+    } else if (chain_a && chain_b) {
+        int k;
+        m->normal.x = m->normal.y = 0;
+        m->count = 0;
+        for (k = 0; k < 2; ++k) {
+            m->points[k].point = pg_v2_zero();
+            m->points[k].separation = 0;
+            m->points[k].id = 0;
+        }
+    } else {
+        const pg_shape *ch = chain_a ? a : b;
+        pg_vec2 p0, p1;
+        const pg_vec2 *before = chain_neighbour(w, ch, 0, &p0), *after = chain_neighbour(w, ch, 1, &p1);
+        pg_collide_chain(&w->world_geoms[chain_a ? sa : sb], before, after, &w->world_geoms[chain_a ? sb : sa], speculative, m);
+        if (chain_b) {
+            m->normal.x = -m->normal.x;
+            m->normal.y = -m->normal.y;
+        }
+    }
+}
+
 /* Run the narrowphase for (sa, sb) into *c, warm-starting from `old` when given. */
 static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact *old, pg_contact *c)
 {
@@ -51,7 +90,7 @@ static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact
          * exactly when sum >= (distance + 1) hz; a resting pair skips the division */
         if (sum >= ((int64_t)PG_SPECULATIVE_DISTANCE + 1) * hz) speculative = pg__sat64(sum / hz);
     }
-    pg_collide(&w->world_geoms[sa], &w->world_geoms[sb], speculative, &m);
+    collide_shapes(w, sa, sb, speculative, &m);
     c->shape_a = sa;
     c->shape_b = sb;
     c->body_a = w->shapes[sa].body;

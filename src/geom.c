@@ -137,6 +137,12 @@ static void clear_tail(pg_geom *g, int32_t from, int32_t to)
     }
 }
 
+pg_vec2 pg_geom_place_point(pg_vec2 local, pg_vec2 position, pg_rot rotation)
+{
+    return pg_v2(pg__sat64((int64_t)position.x + pg__sat64(pg__rot_x(rotation, local.x, local.y))),
+                 pg__sat64((int64_t)position.y + pg__sat64(pg__rot_y(rotation, local.x, local.y))));
+}
+
 void pg_geom_transform(const pg_geom *local, pg_vec2 position, pg_rot rotation, pg_geom *world)
 {
     place(local, position, rotation, world);

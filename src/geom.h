@@ -29,6 +29,9 @@ typedef struct pg_geom {
 /* Unit vector along (x, y) in Q2.30, exact to about 1 LSB of Q30; zero gives zero. */
 pg_dir pg_dir_normalize(int64_t x, int64_t y);
 
+/* Place one point as pg_geom_transform places a vertex (a chain segment's neighbours). */
+pg_vec2 pg_geom_place_point(pg_vec2 local, pg_vec2 position, pg_rot rotation);
+
 /* Place a local geometry with a body's transform: world = position + R local. */
 void pg_geom_transform(const pg_geom *local, pg_vec2 position, pg_rot rotation, pg_geom *world);
 /* The same into a world's per-shape slot, which is always initialised (zero at world

@@ -16,6 +16,8 @@
  *   the pools directly (world_internal.h): flags such as allow_sleep have no getter.
  */
 #include "pogon/scene_file.h"
+#include "chain.h"
+#include "decompose.h"
 #include "text.h"
 #include "world_internal.h"
 
@@ -964,6 +966,144 @@ static pg_result parse_make(scene_parser *P, int kind, token keyword)
     return PG_OK;
 }
 
+/* ---- concave polygons and chains ----------------------------------------------------------------------------- */
+/* X Y pairs up to the first token that is not a number: at most `max` points. */
+static pg_result read_points(scene_parser *P, const char *what, pg_vec2 *v, int32_t max, int32_t *n, uint32_t *column)
+{
+    pg_result r = PG_OK;
+    *n = 0;
+    *column = token_column(P, peek_token(P));
+    while (r == PG_OK && looks_numeric(P, peek_token(P))) {
+        if (*n == max) {
+            msg m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, peek_token(P)));
+            pg__text_put(&m, "a ");
+            pg__text_put(&m, what);
+            pg__text_put(&m, " has at most ");
+            pg__text_i64(&m, max);
+            pg__text_put(&m, " points");
+            return P->result;
+        }
+        r = read_fix(P, what, "x", &v[*n].x, NULL);
+        if (r == PG_OK) r = read_fix(P, what, "y", &v[*n].y, NULL);
+        ++*n;
+    }
+    return r;
+}
+
+/* "the WHAT: DETAIL" as code r at `column`. */
+static pg_result fail_detail(scene_parser *P, pg_result r, uint32_t column, const char *what, const char *detail)
+{
+    msg m = fail(P, r, column);
+    pg__text_put(&m, "the ");
+    pg__text_put(&m, what);
+    pg__text_put(&m, ": ");
+    pg__text_put(&m, detail);
+    return P->result;
+}
+
+/* concave X1 Y1 X2 Y2 ... [properties]: a body of the polygon's convex pieces, as
+ * pg_make_concave makes it (checked as it checks: the pieces, their reach, the whole
+ * body's mass). */
+static pg_result parse_concave(scene_parser *P, token keyword)
+{
+    pg_vec2 v[PG_CONCAVE_MAX_VERTICES];
+    pg__decomposition d;
+    char buf[144];
+    pg__text why = pg__text_in(buf, sizeof buf);
+    int32_t n = 0, k;
+    uint32_t column = 0;
+    props pr;
+    pg_result r;
+    props_init(&pr, PG_BODY_DYNAMIC);
+    r = read_points(P, "concave polygon", v, PG_CONCAVE_MAX_VERTICES, &n, &column);
+    if (r == PG_OK) r = read_props(P, CTX_BODY | CTX_TYPE | CTX_MATERIAL, &pr, "concave");
+    if (r != PG_OK) return r;
+    pr.bd.angle = pr.angle;
+    r = check_body_props(P, &pr);
+    if (r == PG_OK) r = check_density(P, &pr, pr.bd.type, token_column(P, keyword));
+    if (r != PG_OK) return r;
+    r = pg__decompose(v, n, &d, &why);
+    if (r != PG_OK) return fail_detail(P, r, column, "concave polygon", buf);
+    for (k = 0; k < d.count; ++k) {
+        pg_geometry g;
+        pg__piece_geometry(v, &d.pieces[k], &g);
+        r = check_reach(P, &g, pr.bd.type, column, "concave polygon");
+        if (r != PG_OK) return r;
+        pg__shape_build_local(&g, &P->mass_geoms[k]);
+        P->mass_densities[k] = pr.sd.density;
+    }
+    if (P->mode == MODE_READ && pr.bd.type == PG_BODY_DYNAMIC) {
+        const pg_geom *geoms[PG_CONCAVE_MAX_PIECES];
+        const char *problem;
+        for (k = 0; k < d.count; ++k) geoms[k] = &P->mass_geoms[k];
+        problem = pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, d.count), !pr.bd.fixed_rotation);
+        if (problem != NULL) return fail_mass(P, column, "concave polygon", problem);
+    }
+    r = count_objects(P, 1, (uint32_t)d.count);
+    if (r != PG_OK || P->mode == MODE_READ) return r;
+    {
+        pg_body_id id;
+        r = pg_make_concave(P->world, &pr.bd, &pr.sd, v, n, &id);
+        if (r != PG_OK) {
+            P->result = r;
+            return fail_world(P, "cannot make the body");
+        }
+        apply_awake(P->world, id, pr.bd.awake);
+    }
+    return PG_OK;
+}
+
+/* chain X1 Y1 X2 Y2 ... [loop] [properties]: static terrain, as pg_make_chain makes it. */
+static pg_result parse_chain(scene_parser *P, token keyword)
+{
+    pg_vec2 v[PG_CHAIN_MAX_POINTS];
+    char buf[144];
+    pg__text why = pg__text_in(buf, sizeof buf);
+    int32_t n = 0, k;
+    int loop = 0;
+    uint32_t column = 0;
+    props pr;
+    pg_result r;
+    props_init(&pr, PG_BODY_STATIC);
+    r = read_points(P, "chain", v, PG_CHAIN_MAX_POINTS, &n, &column);
+    if (r != PG_OK) return r;
+    if (token_is(P, peek_token(P), "loop")) {
+        (void)next_token(P);
+        loop = 1;
+    }
+    r = read_props(P, CTX_BODY | CTX_TYPE | CTX_MATERIAL, &pr, "chain");
+    if (r != PG_OK) return r;
+    if (pr.bd.type != PG_BODY_STATIC) {
+        msg m = fail(P, PG_ERR_BODY_TYPE, pr.column[P_TYPE]);
+        pg__text_put(&m, "a chain is always static");
+        return P->result;
+    }
+    pr.bd.angle = pr.angle;
+    r = check_body_props(P, &pr);
+    if (r == PG_OK) r = check_density(P, &pr, pr.bd.type, token_column(P, keyword));
+    if (r != PG_OK) return r;
+    r = pg__chain_problem(v, n, loop, &why);
+    if (r != PG_OK) return fail_detail(P, r, column, "chain", buf);
+    for (k = 0; k < (loop ? n : n - 1); ++k) {
+        pg_geometry g;
+        pg__chain_segment(v, n, loop, k, &g);
+        r = check_reach(P, &g, PG_BODY_STATIC, column, "chain");
+        if (r != PG_OK) return r;
+    }
+    r = count_objects(P, 1, (uint32_t)(loop ? n : n - 1));
+    if (r != PG_OK || P->mode == MODE_READ) return r;
+    {
+        pg_body_id id;
+        r = pg_make_chain(P->world, &pr.bd, &pr.sd, v, n, loop, &id);
+        if (r != PG_OK) {
+            P->result = r;
+            return fail_world(P, "cannot make the body");
+        }
+        apply_awake(P->world, id, pr.bd.awake);
+    }
+    return PG_OK;
+}
+
 /* body TYPE [properties] */
 static pg_result parse_body_line(scene_parser *P)
 {
@@ -1003,24 +1143,25 @@ static pg_result make_open_body(scene_parser *P)
 /* shape KIND GEOMETRY... [properties] */
 static pg_result parse_shape(scene_parser *P)
 {
-    static const char *const kinds[5] = {"circle", "segment", "capsule", "box", "polygon"};
-    static const char *const whats[5] = {"a circle shape", "a segment shape", "a capsule shape", "a box shape", "a polygon shape"};
+    static const char *const kinds[6] = {"circle", "segment", "capsule", "box", "polygon", "chain_segment"};
+    static const char *const whats[6] = {"a circle shape", "a segment shape", "a capsule shape", "a box shape", "a polygon shape",
+                                         "a chain segment shape"};
     static const char *const parts[8][2] = {{"vertex 1 x", "vertex 1 y"}, {"vertex 2 x", "vertex 2 y"}, {"vertex 3 x", "vertex 3 y"},
                                             {"vertex 4 x", "vertex 4 y"}, {"vertex 5 x", "vertex 5 y"}, {"vertex 6 x", "vertex 6 y"},
                                             {"vertex 7 x", "vertex 7 y"}, {"vertex 8 x", "vertex 8 y"}};
     token kt = next_token(P);
     uint32_t kind_column = token_column(P, kt);
     int kind;
-    pg_fix a[5] = {0, 0, 0, 0, 0};
+    pg_fix a[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     pg_vec2 v[PG_MAX_VERTICES];
     int32_t count = 0;
     unsigned ctx = CTX_MATERIAL;
     props pr;
     pg_geometry g;
     pg_result r = PG_OK;
-    for (kind = 0; kind < 5; ++kind)
+    for (kind = 0; kind < 6; ++kind)
         if (token_is(P, kt, kinds[kind])) break;
-    if (kind == 5) return fail_expected(P, kt, "a shape kind (circle, segment, capsule, box or polygon)", NULL, NULL);
+    if (kind == 6) return fail_expected(P, kt, "a shape kind (circle, segment, capsule, box, polygon or chain_segment)", NULL, NULL);
     props_init(&pr, P->body.bd.type);
     switch (kind) {
     case 0:
@@ -1039,6 +1180,12 @@ static pg_result parse_shape(scene_parser *P)
         if (r == PG_OK) r = read_fix(P, "box", "height", &a[1], NULL);
         ctx |= CTX_OFFSET | CTX_SHAPE_ANGLE;
         break;
+    case 5: { /* the neighbour before, the segment, the neighbour after */
+        static const char *const names[8] = {"before x", "before y", "x1", "y1", "x2", "y2", "after x", "after y"};
+        int i;
+        for (i = 0; r == PG_OK && i < 8; ++i) r = read_fix(P, kinds[kind], names[i], &a[i], NULL);
+        break;
+    }
     default:
         while (r == PG_OK && looks_numeric(P, peek_token(P))) {
             if (count == PG_MAX_VERTICES) {
@@ -1068,9 +1215,15 @@ static pg_result parse_shape(scene_parser *P)
     case 1: r = pg_geometry_segment(pg_v2(a[0], a[1]), pg_v2(a[2], a[3]), &g); break;
     case 2: r = pg_geometry_capsule(pg_v2(a[0], a[1]), pg_v2(a[2], a[3]), a[4], &g); break;
     case 3: r = pg_geometry_box(a[0] / 2, a[1] / 2, pr.offset, pr.angle, &g); break;
+    case 5: r = pg_geometry_chain_segment(pg_v2(a[0], a[1]), pg_v2(a[2], a[3]), pg_v2(a[4], a[5]), pg_v2(a[6], a[7]), &g); break;
     default: r = pg_geometry_polygon(v, count, &g); break;
     }
     if (r != PG_OK) return fail_geometry(P, r, kind_column, kinds[kind]);
+    if (kind == 5 && P->body.bd.type != PG_BODY_STATIC) {
+        msg m = fail(P, PG_ERR_BODY_TYPE, kind_column);
+        pg__text_put(&m, "chain segments go on static bodies only");
+        return P->result;
+    }
     r = check_reach(P, &g, P->body.bd.type, kind_column, kinds[kind]);
     if (r != PG_OK) return r;
     if (P->body_shapes >= 64) {
@@ -1169,7 +1322,7 @@ static pg_result parse_statement(scene_parser *P, token t)
             P->at = t.start;
             return read_props(P, CTX_BODY, &P->body, "a body");
         }
-        if (token_is(P, t, "body") || make_kind_of(P, t) >= 0) {
+        if (token_is(P, t, "body") || make_kind_of(P, t) >= 0 || token_is(P, t, "concave") || token_is(P, t, "chain")) {
             m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
             pg__text_put(&m, "expected 'end' to close the body of line ");
             pg__text_u64(&m, P->body_line);
@@ -1196,6 +1349,10 @@ static pg_result parse_statement(scene_parser *P, token t)
         P->bodies_started = 1;
         return parse_make(P, make_kind_of(P, t), t);
     }
+    if (token_is(P, t, "concave") || token_is(P, t, "chain")) {
+        P->bodies_started = 1;
+        return token_is(P, t, "concave") ? parse_concave(P, t) : parse_chain(P, t);
+    }
     if (token_is(P, t, "end") || token_is(P, t, "shape")) {
         m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
         msg_token(&m, P, t);
@@ -1209,7 +1366,7 @@ static pg_result parse_statement(scene_parser *P, token t)
         pg__text_put(&m, "' outside a body: put it inside 'body' ... 'end' or on a ready-made line");
         return P->result;
     }
-    return fail_expected(P, t, "a setting, 'body' or a ready-made kind (ball capsule box triangle star wall)", NULL, NULL);
+    return fail_expected(P, t, "a setting, 'body' or a ready-made kind (ball capsule box triangle star wall concave chain)", NULL, NULL);
 }
 
 static pg_result run(scene_parser *P)
@@ -1461,6 +1618,13 @@ static void write_shape(text_out *o, const pg_shape *s)
         put_point(o, g->vertices[1]);
         put_char(o, ' ');
         put_fix(o, g->radius);
+        break;
+    case PG_SHAPE_CHAIN_SEGMENT:
+        put_str(o, "chain_segment");
+        put_point(o, g->vertices[2]);
+        put_point(o, g->vertices[0]);
+        put_point(o, g->vertices[1]);
+        put_point(o, g->vertices[3]);
         break;
     default:
         put_str(o, "polygon");

@@ -87,6 +87,33 @@ pg_result pg_geometry_segment(pg_vec2 a, pg_vec2 b, pg_geometry *out)
     return PG_OK;
 }
 
+/* A neighbour is the segment's own end (none: the chain ends there) or a point at least
+ * an edge's length away from it. */
+static int ghost_ok(pg_vec2 ghost, pg_vec2 end)
+{
+    int64_t dx = (int64_t)ghost.x - end.x, dy = (int64_t)ghost.y - end.y;
+    if (!offset_ok(ghost)) return 0;
+    return (dx == 0 && dy == 0) || dx * dx + dy * dy >= (int64_t)MIN_EDGE * MIN_EDGE;
+}
+
+pg_result pg_geometry_chain_segment(pg_vec2 before, pg_vec2 a, pg_vec2 b, pg_vec2 after, pg_geometry *out)
+{
+    pg_result r;
+    if (out == NULL) return PG_ERR_NULL;
+    clear_geometry(out);
+    r = two_points(a, b, PG_ENV_MIN_THICKNESS);
+    if (r != PG_OK) return r;
+    if (!offset_ok(before) || !offset_ok(after)) return PG_ERR_ENVELOPE;
+    if (!ghost_ok(before, a) || !ghost_ok(after, b)) return PG_ERR_DEGENERATE;
+    out->kind = PG_SHAPE_CHAIN_SEGMENT;
+    out->count = 2;
+    out->vertices[0] = a;
+    out->vertices[1] = b;
+    out->vertices[2] = before;
+    out->vertices[3] = after;
+    return PG_OK;
+}
+
 pg_result pg_geometry_capsule(pg_vec2 a, pg_vec2 b, pg_fix radius, pg_geometry *out)
 {
     pg_result r;
@@ -227,10 +254,15 @@ void pg__shape_build_local(const pg_geometry *g, pg_geom *out)
 
 static pg_result check_shape_def(const pg_world *world, const pg_body *b, const pg_shape_def *d)
 {
+    return pg__check_shape_def(world, b->type, d);
+}
+
+pg_result pg__check_shape_def(const pg_world *world, pg_body_type type, const pg_shape_def *d)
+{
     if (d->pg__cookie != PG__DEF_COOKIE)
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT,
                         "the shape def was not made by pg_default_shape_def(): start from pg_default_shape_def() and change the fields you need");
-    if (b->type == PG_BODY_DYNAMIC && (d->density < PG_ENV_MIN_DENSITY || d->density > PG_ENV_MAX_DENSITY))
+    if (type == PG_BODY_DYNAMIC && (d->density < PG_ENV_MIN_DENSITY || d->density > PG_ENV_MAX_DENSITY))
         return pg__fail_value(world, PG_ERR_ENVELOPE, "density", d->density, "kg/m^2 is outside 0.1..100 for a dynamic body");
     if (d->density < 0 || d->density > PG_ENV_MAX_DENSITY)
         return pg__fail_value(world, PG_ERR_ENVELOPE, "density", d->density, "kg/m^2 is outside 0..100");
@@ -254,7 +286,7 @@ static pg_result check_geometry(const pg_world *world, const pg_geometry *g)
     case PG_ERR_ENVELOPE:
         return pg__fail(world, r, "geometry is outside the envelope: radius 0.005..50 m, at least 0.01 m thick (a box's sides, a polygon's narrowest width, a segment's length), vertices within 1000 m of the body origin");
     default:
-        return pg__fail(world, r, "geometry kind, count or radius do not match: circle 1 vertex, segment 2 and radius 0, capsule 2, polygon 3..8 and radius 0 (use the pg_geometry_* functions)");
+        return pg__fail(world, r, "geometry kind, count or radius do not match: circle 1 vertex, segment and chain segment 2 and radius 0, capsule 2, polygon 3..8 and radius 0 (use the pg_geometry_* functions)");
     }
 }
 
@@ -272,6 +304,10 @@ pg_result pg__validate_geometry(const pg_geometry *g)
     case PG_SHAPE_CAPSULE:
         r = g->count == 2 ? pg_geometry_capsule(g->vertices[0], g->vertices[1], g->radius, &copy) : PG_ERR_INVALID_ARGUMENT;
         break;
+    case PG_SHAPE_CHAIN_SEGMENT:
+        r = g->count == 2 && g->radius == 0 ? pg_geometry_chain_segment(g->vertices[2], g->vertices[0], g->vertices[1], g->vertices[3], &copy)
+                                            : PG_ERR_INVALID_ARGUMENT;
+        break;
     case PG_SHAPE_POLYGON:
         r = g->radius == 0 ? pg_geometry_polygon(g->vertices, g->count, &copy) : PG_ERR_INVALID_ARGUMENT;
         if (r == PG_OK) { /* must already be counter-clockwise: pg_geometry_polygon reverses a clockwise one */
@@ -287,9 +323,7 @@ pg_result pg__validate_geometry(const pg_geometry *g)
     return r;
 }
 
-/* Put a shape, checked by the caller, into free slot i and onto body b's list. The
- * caller updates the body's mass, geometry and sleep. */
-static void attach_shape(pg_world *world, uint32_t body, uint32_t i, const pg_shape_def *def, const pg_geometry *geometry)
+void pg__shape_attach(pg_world *world, uint32_t body, uint32_t i, const pg_shape_def *def, const pg_geometry *geometry)
 {
     pg_body *b = &world->bodies[body];
     pg_shape *s;
@@ -304,8 +338,10 @@ static void attach_shape(pg_world *world, uint32_t body, uint32_t i, const pg_sh
     s->next = PG_NULL_INDEX;
     s->geometry = *geometry;
     {
-        int32_t k; /* unused vertex slots are not state: stored as zero */
-        for (k = geometry->count; k < PG_MAX_POLYGON_VERTICES; ++k) s->geometry.vertices[k] = pg_v2_zero();
+        /* unused vertex slots are not state: stored as zero (a chain segment's two
+         * neighbours follow its two vertices) */
+        int32_t k = geometry->kind == PG_SHAPE_CHAIN_SEGMENT ? 4 : geometry->count;
+        for (; k < PG_MAX_POLYGON_VERTICES; ++k) s->geometry.vertices[k] = pg_v2_zero();
     }
     pg__shape_build_local(geometry, &s->local);
     pg__shape_set_extents(s);
@@ -339,6 +375,8 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     if (r != PG_OK) return r;
     r = check_geometry(world, geometry);
     if (r != PG_OK) return r;
+    if (geometry->kind == PG_SHAPE_CHAIN_SEGMENT && b->type != PG_BODY_STATIC)
+        return pg__fail(world, PG_ERR_BODY_TYPE, "chain segments go on static bodies only (terrain)");
     if (pg__geometry_reach(geometry) > pg__body_reach_limit(b->type)) return pg__fail_reach(world, pg__geometry_reach(geometry), b->type);
     if (b->shape_count >= 64) return pg__fail(world, PG_ERR_CAPACITY, "a body has at most 64 shapes");
     if (b->type == PG_BODY_DYNAMIC) {
@@ -350,7 +388,7 @@ pg_result pg_shape_create(pg_world *world, pg_body_id body, const pg_shape_def *
     for (i = 0; i < world->def.max_shapes; ++i)
         if (!world->shapes[i].used) break;
     if (i == world->def.max_shapes) return pg__fail(world, PG_ERR_CAPACITY, "max_shapes reached");
-    attach_shape(world, body.index, i, def, geometry);
+    pg__shape_attach(world, body.index, i, def, geometry);
     s = &world->shapes[i];
     pg__body_update_mass(world, body.index);
     pg__body_sync_geometry(world, body.index);
@@ -454,7 +492,7 @@ static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_de
     for (i = 0; i < n; ++i) {
         uint32_t slot = 0;
         while (w->shapes[slot].used) ++slot;
-        attach_shape(w, id.index, slot, sd, &g[i]);
+        pg__shape_attach(w, id.index, slot, sd, &g[i]);
     }
     pg__body_update_mass(w, id.index);
     pg__body_sync_geometry(w, id.index);

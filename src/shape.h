@@ -7,5 +7,10 @@
 pg_shape *pg__shape(const pg_world *world, pg_shape_id id); /* NULL if stale */
 void pg__shape_build_local(const pg_geometry *g, pg_geom *out); /* collision form of a geometry */
 pg_result pg__validate_geometry(const pg_geometry *g);             /* what pg_shape_create accepts */
+/* The shape def's checks for a body of `type` (reported in the world's last error). */
+pg_result pg__check_shape_def(const pg_world *world, pg_body_type type, const pg_shape_def *d);
+/* Put a shape, checked by the caller, into free slot i and onto body `body`'s list. The
+ * caller updates the body's mass, geometry and sleep. */
+void pg__shape_attach(pg_world *world, uint32_t body, uint32_t i, const pg_shape_def *def, const pg_geometry *geometry);
 
 #endif

@@ -185,6 +185,10 @@ static void encode_shape(const pg_shape *sh, sink *s)
     emit(s, (uint32_t)sh->geometry.kind);
     emit(s, (uint32_t)sh->geometry.count);
     for (i = 0; i < sh->geometry.count; ++i) emit_vec(s, sh->geometry.vertices[i]);
+    if (sh->geometry.kind == PG_SHAPE_CHAIN_SEGMENT) { /* its neighbours decide its normals */
+        emit_vec(s, sh->geometry.vertices[2]);
+        emit_vec(s, sh->geometry.vertices[3]);
+    }
     emit_i32(s, sh->geometry.radius);
     emit_i32(s, sh->density);
     emit_i32(s, sh->friction);
@@ -621,11 +625,15 @@ static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size
             if (sh.next != PG_NULL_INDEX && sh.next >= caps->max_shapes) invalid(r, at, "shape.next");
             at = r->pos;
             sh.geometry.kind = (pg_shape_kind)take(r, "shape.kind");
-            if ((unsigned)sh.geometry.kind > (unsigned)PG_SHAPE_POLYGON) invalid(r, at, "shape.kind");
+            if ((unsigned)sh.geometry.kind > (unsigned)PG_SHAPE_CHAIN_SEGMENT) invalid(r, at, "shape.kind");
             at = r->pos;
             sh.geometry.count = (int32_t)take(r, "shape.vertex_count");
             if (sh.geometry.count < 1 || sh.geometry.count > PG_MAX_VERTICES) invalid(r, at, "shape.vertex_count");
             for (v = 0; v < sh.geometry.count && r->error_field == NULL; ++v) sh.geometry.vertices[v] = take_vec(r, "shape.vertex");
+            if (sh.geometry.kind == PG_SHAPE_CHAIN_SEGMENT && sh.geometry.count == 2 && r->error_field == NULL) {
+                sh.geometry.vertices[2] = take_vec(r, "shape.neighbour");
+                sh.geometry.vertices[3] = take_vec(r, "shape.neighbour");
+            }
             sh.geometry.radius = take_i32(r, "shape.radius");
             sh.density = take_i32(r, "shape.density");
             sh.friction = take_i32(r, "shape.friction");
@@ -638,6 +646,9 @@ static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size
             if (r->error_field == NULL && r->body_info != NULL && sh.body < r->n_bodies && r->body_info[5u * sh.body] != 0u &&
                 pg__geometry_reach(&sh.geometry) > pg__body_reach_limit((pg_body_type)(r->body_info[5u * sh.body] - 1u)))
                 invalid(r, at, "shape.geometry (reaches farther from its body's origin than the body's type allows)");
+            if (r->error_field == NULL && r->body_info != NULL && sh.geometry.kind == PG_SHAPE_CHAIN_SEGMENT && sh.body < r->n_bodies &&
+                r->body_info[5u * sh.body] != 1u + (uint32_t)PG_BODY_STATIC)
+                invalid(r, at, "shape.kind (a chain segment on a body that is not static)");
             if (sh.density < 0 || sh.density > PG_FIX_C(100) || sh.friction < 0 || sh.friction > PG_FIX_C(10) ||
                 sh.restitution < 0 || sh.restitution > PG_FIX_ONE)
                 invalid(r, at, "shape.material");

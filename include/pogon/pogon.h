@@ -3,7 +3,8 @@
  *
  * WHAT IT IS
  *   Bodies made of convex shapes (circle, capsule, segment, box, convex polygon up to 8
- *   vertices) collide, stack, slide and bounce. Everything is integer arithmetic
+ *   vertices; a concave polygon becomes its convex pieces, terrain a chain of one-sided
+ *   segments: pg_make_concave, pg_make_chain) collide, stack, slide and bounce. Everything is integer arithmetic
  *   (Q16.16, see fixed.h), so a world stepped with the same inputs gives the same bits
  *   on every compiler and CPU.
  *
@@ -335,7 +336,13 @@ typedef enum pg_shape_kind {
     PG_SHAPE_CIRCLE = 0,  /**< a point and a radius */
     PG_SHAPE_SEGMENT = 1, /**< two points */
     PG_SHAPE_CAPSULE = 2, /**< two points and a radius */
-    PG_SHAPE_POLYGON = 3  /**< 3..8 vertices, convex */
+    PG_SHAPE_POLYGON = 3, /**< 3..8 vertices, convex */
+    PG_SHAPE_CHAIN_SEGMENT = 4 /**< a one-sided segment of a chain: vertices[0..1] the
+                                  segment, vertices[2..3] its neighbours ("ghost" vertices:
+                                  the chain's point before vertices[0] and after vertices[1],
+                                  or the segment's own end where the chain ends); count 2.
+                                  It collides on its right-hand side only, and only with
+                                  normals its neighbours allow (pg_make_chain) */
 } pg_shape_kind;
 
 /** A convex primitive in its own frame. Build one with the pg_geometry_* functions,
@@ -361,6 +368,34 @@ pg_result pg_geometry_capsule(pg_vec2 a, pg_vec2 b, pg_fix radius, pg_geometry *
 pg_result pg_geometry_box(pg_fix half_width, pg_fix half_height, pg_vec2 center, pg_angle angle, pg_geometry *out);
 /** Convex polygon; vertices in either winding (they are stored counter-clockwise). */
 pg_result pg_geometry_polygon(const pg_vec2 *vertices, int32_t count, pg_geometry *out);
+/** A chain segment from a to b (see PG_SHAPE_CHAIN_SEGMENT) whose chain comes from
+ * `before` and goes on to `after`; pass a itself as `before` (b as `after`) where the
+ * chain ends there. It collides on the right-hand side of a -> b. Static bodies only. */
+pg_result pg_geometry_chain_segment(pg_vec2 before, pg_vec2 a, pg_vec2 b, pg_vec2 after, pg_geometry *out);
+
+/** Most vertices of a concave polygon (pg_geometry_decompose, pg_make_concave): 64, so
+ * that the decomposition's work space stays under 1 KiB of stack and its at most 62
+ * pieces fit one body (64 shapes). */
+#define PG_CONCAVE_MAX_VERTICES 64
+/** Most convex pieces a polygon of PG_CONCAVE_MAX_VERTICES vertices gives (n - 2). */
+#define PG_CONCAVE_MAX_PIECES (PG_CONCAVE_MAX_VERTICES - 2)
+
+/** Split a simple polygon (3..PG_CONCAVE_MAX_VERTICES vertices, either winding, no two
+ * equal points, no three consecutive points on a line, no two edges crossing or
+ * touching) into convex pieces of at most PG_MAX_VERTICES vertices, each one that
+ * pg_geometry_polygon accepts (counter-clockwise, at least 0.01 m thick), whose areas
+ * add up exactly to the polygon's. Ear clipping in exact integer arithmetic (the
+ * thickest ear first, counted counter-clockwise from vertex 0 on ties), then merging
+ * neighbouring pieces while they stay convex (Hertel-Mehlhorn): the result is a pure
+ * function of the input (docs/concave.md). Writes *piece_count pieces to `pieces` (`capacity` of them;
+ * PG_CONCAVE_MAX_PIECES always suffice). Refuses with PG_ERR_INVALID_ARGUMENT (count,
+ * edges that cross or touch), PG_ERR_DEGENERATE (repeated point, collinear vertex, edge
+ * under 0.005 m), PG_ERR_ENVELOPE (a vertex beyond 1000 m, a part thinner than 0.01 m),
+ * PG_ERR_CAPACITY (capacity too small); `message` (may be NULL) then names the vertex or
+ * edge at fault. */
+pg_result pg_geometry_decompose(const pg_vec2 *vertices, int32_t count, pg_geometry *pieces, int32_t capacity,
+                                int32_t *piece_count, char *message, size_t message_capacity);
+
 /** Equilateral triangle with circumradius r, centred at `center`, one vertex at `angle`
  * (PG_ANGLE_QUARTER: pointing up). */
 pg_result pg_geometry_triangle(pg_vec2 center, pg_fix circumradius, pg_angle angle, pg_geometry *out);
@@ -402,6 +437,25 @@ pg_result pg_make_triangle(pg_world *w, const pg_body_def *bd, const pg_shape_de
 pg_result pg_make_star(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix circumradius, pg_body_id *out);
 /** A static box (bd->type is ignored). */
 pg_result pg_make_wall(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, pg_fix width, pg_fix height, pg_body_id *out);
+/** A body of any type whose shapes are the convex pieces pg_geometry_decompose makes of
+ * the simple polygon `vertices` (body frame, either winding); its mass, centre and
+ * inertia are the polygon's. Refuses as pg_geometry_decompose does, naming the vertex or
+ * edge at fault in pg_world_last_error. */
+pg_result pg_make_concave(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, const pg_vec2 *vertices, int32_t count,
+                          pg_body_id *out);
+
+/** Most points of a chain: 65 open (64 segments, a body's most shapes), 64 as a loop. */
+#define PG_CHAIN_MAX_POINTS 65
+/** A static body (bd->type is ignored) of chain segments between consecutive points
+ * (and from the last back to the first when `loop` is nonzero), for terrain: each
+ * segment knows its neighbours, so a body sliding across a joint between two segments
+ * gets no normal from the joint's end (no "ghost bump"). Segments collide on their
+ * right-hand side: walk the points with free space on your right (terrain from right
+ * to left, a loop clockwise to hold bodies inside, counter-clockwise to be solid).
+ * Needs 2..65 points (3..64 for a loop), consecutive points at least 0.01 m apart,
+ * within 1000 m of the body origin. */
+pg_result pg_make_chain(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, const pg_vec2 *points, int32_t count, int loop,
+                        pg_body_id *out);
 
 /* ---- queries ------------------------------------------------------------------------------ */
 /** @{ */

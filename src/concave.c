@@ -1,0 +1,114 @@
+/* concave.c — concave polygons: pg_geometry_decompose (the pieces, for the caller) and
+ * pg_make_concave (a body of them). The geometry is decompose.c's; this file checks
+ * everything a body needs before it makes one, so a failing call changes nothing. */
+#include "body.h"
+#include "decompose.h"
+#include "error.h"
+#include "island.h"
+#include "mass.h"
+#include "reach.h"
+#include "shape.h"
+
+pg_result pg_geometry_decompose(const pg_vec2 *vertices, int32_t count, pg_geometry *pieces, int32_t capacity,
+                                int32_t *piece_count, char *message, size_t message_capacity)
+{
+    pg__decomposition d;
+    pg__text why = pg__text_in(message, message_capacity);
+    pg_result r;
+    int32_t k;
+    if (piece_count != NULL) *piece_count = 0;
+    if (vertices == NULL || pieces == NULL || piece_count == NULL) {
+        pg__text_put(&why, vertices == NULL ? "vertices is NULL" : pieces == NULL ? "pieces is NULL" : "piece_count is NULL");
+        return PG_ERR_NULL;
+    }
+    r = pg__decompose(vertices, count, &d, &why);
+    if (r != PG_OK) return r;
+    if (d.count > capacity) {
+        pg__text_put(&why, "the polygon gives ");
+        pg__text_i64(&why, d.count);
+        pg__text_put(&why, " pieces, capacity is ");
+        pg__text_i64(&why, capacity);
+        return PG_ERR_CAPACITY;
+    }
+    for (k = 0; k < d.count; ++k) pg__piece_geometry(vertices, &d.pieces[k], &pieces[k]);
+    *piece_count = d.count;
+    return PG_OK;
+}
+
+/* The largest |x| or |y| of the vertices, as pg__geometry_reach measures a shape. */
+static pg_fix vertices_reach(const pg_vec2 *v, int32_t n)
+{
+    pg_fix reach = 0;
+    int32_t i;
+    for (i = 0; i < n; ++i) { /* within 1000 m (pg__decompose checked): negating is safe */
+        pg_fix x = v[i].x < 0 ? -v[i].x : v[i].x, y = v[i].y < 0 ? -v[i].y : v[i].y;
+        if (x > reach) reach = x;
+        if (y > reach) reach = y;
+    }
+    return reach;
+}
+
+/* Why a dynamic body of these pieces would leave the mass formats, or NULL. The pieces'
+ * collision forms are built in the free shape slots they are about to take: an unused
+ * slot's contents are not state (neither hashed nor saved), and 62 forms on the stack
+ * would be 9 KB. */
+static const char *mass_problem(pg_world *w, const pg_vec2 *v, const pg__decomposition *d, pg_fix density, int rotates)
+{
+    const pg_geom *geoms[PG_CONCAVE_MAX_PIECES];
+    pg_fix densities[PG_CONCAVE_MAX_PIECES];
+    uint32_t slot = 0;
+    int32_t k;
+    for (k = 0; k < d->count; ++k, ++slot) {
+        pg_geometry g;
+        while (w->shapes[slot].used) ++slot; /* the caller counted enough free slots */
+        pg__piece_geometry(v, &d->pieces[k], &g);
+        pg__shape_build_local(&g, &w->shapes[slot].local);
+        geoms[k] = &w->shapes[slot].local;
+        densities[k] = density;
+    }
+    return pg__mass_data_problem(pg_compound_mass(geoms, densities, d->count), rotates);
+}
+
+pg_result pg_make_concave(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, const pg_vec2 *vertices, int32_t count,
+                          pg_body_id *out)
+{
+    pg__decomposition d;
+    char buf[144];
+    pg__text why = pg__text_in(buf, sizeof buf);
+    pg_body_id id;
+    pg_result r;
+    int32_t k;
+    if (w == NULL) return PG_ERR_NULL;
+    if (bd == NULL || sd == NULL || vertices == NULL || out == NULL)
+        return pg__fail(w, PG_ERR_NULL, bd == NULL ? "pg_make_concave: body def is NULL" : sd == NULL ? "pg_make_concave: shape def is NULL"
+                                        : vertices == NULL ? "pg_make_concave: vertices is NULL" : "pg_make_concave: out is NULL");
+    out->index = 0;
+    out->generation = 0;
+    pg__text_put(&why, "pg_make_concave: ");
+    r = pg__decompose(vertices, count, &d, &why);
+    if (r != PG_OK) return pg__fail(w, r, buf);
+    r = pg__check_shape_def(w, bd->type, sd);
+    if (r != PG_OK) return r;
+    if (vertices_reach(vertices, count) > pg__body_reach_limit(bd->type)) return pg__fail_reach(w, vertices_reach(vertices, count), bd->type);
+    if (w->body_count >= w->def.max_bodies) return pg__fail(w, PG_ERR_CAPACITY, "max_bodies reached");
+    if (w->shape_count + (uint32_t)d.count > w->def.max_shapes) return pg__fail(w, PG_ERR_CAPACITY, "max_shapes reached");
+    if (bd->type == PG_BODY_DYNAMIC) {
+        const char *problem = mass_problem(w, vertices, &d, sd->density, !bd->fixed_rotation);
+        if (problem != NULL) return pg__fail(w, PG_ERR_ENVELOPE, problem);
+    }
+    /* everything is checked; pg_body_create checks its def before it changes anything */
+    r = pg_body_create(w, bd, &id);
+    if (r != PG_OK) return r;
+    for (k = 0; k < d.count; ++k) {
+        pg_geometry g;
+        uint32_t slot = 0;
+        while (w->shapes[slot].used) ++slot;
+        pg__piece_geometry(vertices, &d.pieces[k], &g);
+        pg__shape_attach(w, id.index, slot, sd, &g);
+    }
+    pg__body_update_mass(w, id.index);
+    pg__body_sync_geometry(w, id.index);
+    pg__wake_body(w, id.index);
+    *out = id;
+    return PG_OK;
+}
