@@ -23,7 +23,8 @@ uint32_t pga__default_color(pg_body_type type, pg_shape_kind kind, uint32_t shap
     switch (kind) {
     case PG_SHAPE_CIRCLE: return 0xef4444u;  /* red */
     case PG_SHAPE_CAPSULE: return 0x10b981u; /* green */
-    case PG_SHAPE_SEGMENT: return 0x9ca3afu; /* light grey */
+    case PG_SHAPE_SEGMENT:
+    case PG_SHAPE_CHAIN_SEGMENT: return 0x9ca3afu; /* light grey */
     default: return 0x3b82f6u;               /* blue: boxes and polygons */
     }
 }
@@ -96,7 +97,7 @@ const pga_draw_shape *pga_draw_list(const pga_app *app, uint32_t *count)
             if (pg_shape_geometry(w, shapes[k], &g) != PG_OK) continue;
             if (k == 0) color = color_of(w, body, g.kind, ns);
             d->body = body;
-            d->kind = g.kind;
+            d->kind = g.kind == PG_SHAPE_CHAIN_SEGMENT ? PG_SHAPE_SEGMENT : g.kind; /* drawn as its segment */
             d->count = g.count;
             d->radius = g.radius;
             d->color = color;

@@ -53,7 +53,7 @@ uint32_t pga_world_draw_shapes(const pg_world *world, pga_draw_shape *out, uint3
             if (written >= capacity || out == NULL) continue;
             d = &out[written++];
             d->body = bodies[b];
-            d->kind = g.kind;
+            d->kind = g.kind == PG_SHAPE_CHAIN_SEGMENT ? PG_SHAPE_SEGMENT : g.kind; /* drawn as its segment */
             d->count = g.count;
             d->radius = g.radius;
             d->flags = flags;

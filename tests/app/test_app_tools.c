@@ -330,6 +330,26 @@ static void test_draw_list(void **state)
     pga_destroy(app);
 }
 
+/* A chain of one-sided segments is drawn as its segments: the front ends draw circles,
+ * segments, capsules and polygons only. */
+static void test_draw_list_chain(void **state)
+{
+    pga_app *app = app_with("c", "pogon-scene 1\nchain 6 0 2 -1 -2 -1 -6 0\n");
+    const pga_draw_shape *d;
+    uint32_t n, i;
+    (void)state;
+    d = pga_draw_list(app, &n);
+    assert_int_equal(n, 3);
+    for (i = 0; i < n; ++i) {
+        assert_int_equal(d[i].kind, PG_SHAPE_SEGMENT);
+        assert_int_equal(d[i].count, 2);
+        assert_int_equal(d[i].color, 0x6b7280u);
+    }
+    assert_true(pg_v2_equal(d[0].vertices[0], at(6, 0)));
+    assert_true(pg_v2_equal(d[0].vertices[1], at(2, -1)));
+    pga_destroy(app);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -340,6 +360,7 @@ int main(void)
         cmocka_unit_test(test_nudge_places_at_free_spot),
         cmocka_unit_test(test_delete),
         cmocka_unit_test(test_draw_list),
+        cmocka_unit_test(test_draw_list_chain),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
