@@ -311,7 +311,9 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
             if (hy > box.hi.y) box.hi.y = hy;
         }
         /* saturating: a body that has flown out of the envelope reaches the edge of the
-         * Q16.16 range, where a plain add would overflow */
+         * Q16.16 range, where a plain add would overflow. Inside the envelope these sums
+         * (and the turn radius's above) never clamp: origin 1000 m + static reach 1000 m
+         * + margin + a sweep of max_linear_speed / step_hz <= 4096 m is below 6100 m */
         box.lo.x = pg__sat64((int64_t)box.lo.x - margin - (b->v.x < 0 ? sweep_x : 0));
         box.lo.y = pg__sat64((int64_t)box.lo.y - margin - (b->v.y < 0 ? sweep_y : 0));
         box.hi.x = pg__sat64((int64_t)box.hi.x + margin + (b->v.x < 0 ? 0 : sweep_x));
@@ -631,6 +633,8 @@ pg_result pg_body_apply_linear_impulse(pg_world *world, pg_body_id id, pg_vec2 i
     pg_result r = dynamic_body(world, id, "pg_body_apply_linear_impulse: body handle is stale or invalid", &b);
     if (r != PG_OK) return r;
     if (!in_position_envelope(point)) return pg__fail(world, PG_ERR_ENVELOPE, "point is outside +-1000 m");
+    /* a sum past Q16.16 is past every max_linear_speed too: the cap scales it and counts
+     * it in stats.speed_clamps */
     b->v = pg__clamp_speed(world, pg_v2(pg__sat64(add_to_fix(b->v.x, pg__mul64_shr(impulse.x, b->inv_mass, 38))),
                                         pg__sat64(add_to_fix(b->v.y, pg__mul64_shr(impulse.y, b->inv_mass, 38)))),
                            &b->flags);
