@@ -7,6 +7,8 @@
 #                           cmake/consumer-test against it three ways:
 #                           find_package(pogon), pkg-config, add_subdirectory().
 #   cortex_m_size_and_no_float  (below) the Cortex-M flash limits and no-float check.
+#   static_clang_tidy, static_cppcheck  (below) src/ has no findings
+#                           (scripts/static-analysis.sh); the clang preset turns them on.
 
 if(NOT CMAKE_CROSSCOMPILING AND NOT EMSCRIPTEN
    AND CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$"
@@ -51,4 +53,18 @@ if(POGON_CORTEX_M_TESTS AND _pogon_python3)
             --build "${PROJECT_BINARY_DIR}/cortex-m-size")
   set_tests_properties(cortex_m_size_and_no_float PROPERTIES
     LABELS "build;cortex-m" TIMEOUT 600 SKIP_RETURN_CODE 77)
+endif()
+
+# static_clang_tidy, static_cppcheck: clang-tidy (.clang-tidy's checks) and cppcheck find
+# nothing in src/ (scripts/static-analysis.sh, with this build's compile commands);
+# skipped (77) without the tools. One preset runs them (the clang preset), as their
+# findings do not depend on the build.
+option(POGON_STATIC_ANALYSIS "Register the static analysis tests (clang-tidy, cppcheck) on src/" OFF)
+if(POGON_STATIC_ANALYSIS)
+  foreach(_pogon_tool clang-tidy cppcheck)
+    string(REPLACE "-" "_" _pogon_name "static_${_pogon_tool}")
+    add_test(NAME ${_pogon_name}
+      COMMAND sh "${PROJECT_SOURCE_DIR}/scripts/static-analysis.sh" ${_pogon_tool} "${PROJECT_BINARY_DIR}")
+    set_tests_properties(${_pogon_name} PROPERTIES LABELS "static" TIMEOUT 1200 SKIP_RETURN_CODE 77)
+  endforeach()
 endif()

@@ -109,6 +109,7 @@ pg_result pg_body_create(pg_world *world, const pg_body_def *def, pg_body_id *ou
         unsigned char *p = (unsigned char *)&zero;
         size_t k;
         for (k = 0; k < sizeof zero; ++k) p[k] = 0;
+        /* cppcheck-suppress uninitvar ; every byte of zero was set by the loop above */
         *b = zero;
         b->generation = generation == 0 ? 1u : generation;
     }
@@ -540,7 +541,12 @@ static pg_result dynamic_body(pg_world *world, pg_body_id id, const char *fn, pg
 {
     pg_body *b = pg__body(world, id);
     if (world == NULL) return PG_ERR_NULL;
-    if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, fn);
+    if (b == NULL) {
+        /* the code returned here, not pg__fail's: clang's analyzer, which sees one file,
+         * would otherwise take the failure for PG_OK and the callers' b for NULL */
+        (void)pg__fail(world, PG_ERR_STALE_HANDLE, fn);
+        return PG_ERR_STALE_HANDLE;
+    }
     if (b->type != PG_BODY_DYNAMIC) return pg__fail(world, PG_ERR_BODY_TYPE, "forces and impulses act on dynamic bodies only");
     *out = b;
     return PG_OK;

@@ -75,6 +75,7 @@ static softness make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
 {
     softness s;
     int64_t omega = row_round((int64_t)hertz * PG_FIX_TWO_PI, 16); /* Q16 */
+    s.floor_depth = 0; /* the caller sets it from the push floor (pg__contacts_set_softness) */
     int64_t h_omega = (omega * 2 + (int64_t)n_per_second) / (2 * (int64_t)n_per_second);
     int64_t a1 = 2 * (int64_t)zeta + h_omega;
     int64_t a2 = row_round(h_omega * a1, 16);
@@ -1120,6 +1121,7 @@ void pg__contacts_set_softness(step_context *ctx, const pg_world_def *def)
      * cap, but at 2 substeps (60 Hz at 120 a second, omega h = pi), at 1, or at 60 Hz it
      * was past it, where the soft step is not stable: a heavy box on a light one shook at
      * 0.5-4 m/s or fell through it (test_mass_ratio_within_the_softness_cap). */
+    /* cppcheck-suppress ctuuninitvar ; pg__solve sets ctx->n before this call, which fills in the rest */
     hertz_cap = (pg_fix)((int64_t)ctx->n * 16384); /* n / 4 in Q16.16, exact; n <= 16000 */
     hertz = def->contact_hertz < hertz_cap ? def->contact_hertz : hertz_cap;
     hertz_static = pg_fix_add(hertz, hertz);

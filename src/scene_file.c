@@ -383,7 +383,8 @@ static int token_is(const scene_parser *P, token t, const char *word)
 /* Does the token start like a number (so a vertex list goes on)? */
 static int looks_numeric(const scene_parser *P, token t)
 {
-    char c = t.len != 0 ? P->text[t.start] : 'x';
+    char c = 'x';
+    if (t.len != 0) c = P->text[t.start];
     return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.';
 }
 
@@ -438,8 +439,8 @@ static pg_result read_uint(scene_parser *P, const char *name, uint64_t max, uint
         char c = P->text[t.start + i];
         uint64_t d;
         if (c >= '0' && c <= '9') d = (uint64_t)(c - '0');
-        else if (base == 16 && c >= 'a' && c <= 'f') d = (uint64_t)(c - 'a' + 10);
-        else if (base == 16 && c >= 'A' && c <= 'F') d = (uint64_t)(c - 'A' + 10);
+        else if (base == 16 && c >= 'a' && c <= 'f') d = (uint64_t)(c - 'a') + 10u;
+        else if (base == 16 && c >= 'A' && c <= 'F') d = (uint64_t)(c - 'A') + 10u;
         else return fail_expected(P, t, base == 16 ? "a hexadecimal integer" : "an integer", name, NULL);
         if (v > (UINT64_MAX - d) / (uint64_t)base) overflow = 1;
         else v = v * (uint64_t)base + d;
