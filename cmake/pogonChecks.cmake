@@ -32,13 +32,17 @@ if(POGON_INSTALL AND NOT CMAKE_CROSSCOMPILING AND NOT EMSCRIPTEN)
   # What the consumer must be built with to link the installed library
   # (sanitizer flags of a debug-asan build, for example).
   string(TOUPPER "${CMAKE_BUILD_TYPE}" _pogon_bt)
+  set(_pogon_consumer_ldflags "${CMAKE_EXE_LINKER_FLAGS}")
+  if(POGON_COVERAGE)
+    string(APPEND _pogon_consumer_ldflags " -fprofile-instr-generate") # the library's profile runtime
+  endif()
   add_test(NAME consumer_find_package
     COMMAND sh "${PROJECT_SOURCE_DIR}/scripts/check-consumer.sh"
             "${PROJECT_BINARY_DIR}" "${PROJECT_SOURCE_DIR}" "$<CONFIG>")
   set_tests_properties(consumer_find_package PROPERTIES
     LABELS "build"
     TIMEOUT 300
-    ENVIRONMENT "CMAKE_COMMAND=${CMAKE_COMMAND};POGON_CC=${CMAKE_C_COMPILER};POGON_CFLAGS=${CMAKE_C_FLAGS} ${CMAKE_C_FLAGS_${_pogon_bt}};POGON_LDFLAGS=${CMAKE_EXE_LINKER_FLAGS};POGON_VERSION=${PROJECT_VERSION};POGON_TRIG_TABLE_BITS=${PG_TRIG_TABLE_BITS};POGON_SHARED=${BUILD_SHARED_LIBS}")
+    ENVIRONMENT "CMAKE_COMMAND=${CMAKE_COMMAND};POGON_CC=${CMAKE_C_COMPILER};POGON_CFLAGS=${CMAKE_C_FLAGS} ${CMAKE_C_FLAGS_${_pogon_bt}};POGON_LDFLAGS=${_pogon_consumer_ldflags};POGON_VERSION=${PROJECT_VERSION};POGON_TRIG_TABLE_BITS=${PG_TRIG_TABLE_BITS};POGON_SHARED=${BUILD_SHARED_LIBS}")
 endif()
 
 # cortex_m_size_and_no_float: tools/size/size_table.py --check builds the library for
