@@ -541,13 +541,16 @@ static pg_result dynamic_body(pg_world *world, pg_body_id id, const char *fn, pg
 {
     pg_body *b = pg__body(world, id);
     if (world == NULL) return PG_ERR_NULL;
+    /* each failure returns its code here, not pg__fail's: clang's analyzer, which sees
+     * one file, would otherwise take a failure for PG_OK and the callers' b for NULL */
     if (b == NULL) {
-        /* the code returned here, not pg__fail's: clang's analyzer, which sees one file,
-         * would otherwise take the failure for PG_OK and the callers' b for NULL */
         (void)pg__fail(world, PG_ERR_STALE_HANDLE, fn);
         return PG_ERR_STALE_HANDLE;
     }
-    if (b->type != PG_BODY_DYNAMIC) return pg__fail(world, PG_ERR_BODY_TYPE, "forces and impulses act on dynamic bodies only");
+    if (b->type != PG_BODY_DYNAMIC) {
+        (void)pg__fail(world, PG_ERR_BODY_TYPE, "forces and impulses act on dynamic bodies only");
+        return PG_ERR_BODY_TYPE;
+    }
     *out = b;
     return PG_OK;
 }
