@@ -88,6 +88,7 @@ static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact
         int64_t hz = (int64_t)w->def.step_hz;
         /* reach = sum / hz (sum >= 0: the quotient is its floor) exceeds the distance
          * exactly when sum >= (distance + 1) hz; a resting pair skips the division */
+        /* never clamps: four speeds within max_linear_speed (<= 4096 m/s) and hz >= 1 */
         if (sum >= ((int64_t)PG_SPECULATIVE_DISTANCE + 1) * hz) speculative = pg__sat64(sum / hz);
     }
     collide_shapes(w, sa, sb, speculative, &m);

@@ -107,6 +107,9 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
                 vx = (int64_t)sb->v.x + whole * sb->accel.x + pg__round_shift64(sb->accel.x * t1, 32) - pg__round_shift64(sb->accel.x * t0, 32);
                 vy = (int64_t)sb->v.y + whole * sb->accel.y + pg__round_shift64(sb->accel.y * t1, 32) - pg__round_shift64(sb->accel.y * t0, 32);
             }
+            /* |v| <= 2^29 and the change within +-2^31 (|a| <= PG_FIX_MAX, t <= 1 s): out of
+             * Q16.16 only for an acceleration beyond the envelope, counted */
+            sb->saturated |= (uint32_t)(vx != pg__sat64(vx) || vy != pg__sat64(vy));
             sb->v = pg__clamp_speed(w, pg_v2(pg__sat64(vx), pg__sat64(vy)), &w->bodies[active[i]].flags);
         }
         if (sb->lin_damp != PG_ROT_ONE) {
@@ -114,8 +117,11 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
             sb->v.y = pg__mul_q30(sb->v.y, sb->lin_damp);
         }
         if (rotation) {
-            if (sb->alpha != 0)
-                sb->w = pg__sat64((int64_t)sb->w + whole * sb->alpha + pg__round_shift64(sb->alpha * t1, 32) - pg__round_shift64(sb->alpha * t0, 32));
+            if (sb->alpha != 0) {
+                int64_t spun = (int64_t)sb->w + whole * sb->alpha + pg__round_shift64(sb->alpha * t1, 32) - pg__round_shift64(sb->alpha * t0, 32);
+                sb->saturated |= (uint32_t)(spun != pg__sat64(spun)); /* as v above */
+                sb->w = pg__sat64(spun);
+            }
             if (sb->ang_damp != PG_ROT_ONE) sb->w = pg__mul_q30(sb->w, sb->ang_damp);
         }
         sb->v_pre = sb->v;
@@ -136,6 +142,9 @@ static void integrate_positions(solver_body *bodies, const uint32_t *active, uin
             vx += sb->pv.x;
             vy += sb->pv.y;
         }
+        /* saturating only for a body already out of the envelope: from |c| <= 1000 m, at
+         * most VELOCITY_MAX (8192 m/s, plus as much pseudo velocity) for at most 1 s
+         * reaches 17384 m < 32768 m within a step (envelope_exits counts the way out) */
         sb->c.x = pg__sat64((int64_t)sb->c.x + pg__round_shift64(vx * ctx->h_q32, 32));
         sb->c.y = pg__sat64((int64_t)sb->c.y + pg__round_shift64(vy * ctx->h_q32, 32));
         sb->dp = pg_v2((pg_fix)((int64_t)sb->c.x - sb->c0.x), (pg_fix)((int64_t)sb->c.y - sb->c0.y));
@@ -189,6 +198,7 @@ void pg__solve(pg_world *w)
         d->accel = pg_v2_zero(); /* read for the approach speed (APPROACH) */
         d->alpha = 0;
         d->pv = pg_v2_zero();
+        d->saturated = 0;
         d->pushed = 0;
         d->lin_damp = d->ang_damp = PG_ROT_ONE;
         d->v_pre = pg_v2_zero();
@@ -202,8 +212,11 @@ void pg__solve(pg_world *w)
         if (!pg__body_is_active(b)) continue;
         active[n_active++] = i;
         sb = &bodies[i];
-        sb->v = pg_v2(clamp_velocity(b->v.x), clamp_velocity(b->v.y)); /* the kernel's bounds */
+        /* the kernel's bounds: a body's velocities are within max_linear_speed (at most
+         * 4096 m/s) and +-1000 rad/s (the caps every write keeps), so these never clamp */
+        sb->v = pg_v2(clamp_velocity(b->v.x), clamp_velocity(b->v.y));
         sb->w = rotation ? clamp_velocity(b->w) : 0;
+        sb->saturated = 0;
         sb->c0 = sb->c = b->center;
         sb->dp = pg_v2_zero();
         sb->a0 = sb->a = b->angle;
@@ -232,6 +245,9 @@ void pg__solve(pg_world *w)
                 ay = add_force_term(ay, pg__mul64_shr(b->force_y, b->inv_mass, 38));
             }
             if (rotation && b->torque != 0) alpha = pg__mul64_shr(b->torque, b->inv_inertia, 38);
+            /* gravity is within +-1000 m/s^2; a force or torque beyond the envelope on a
+             * light body may leave Q16.16: counted */
+            sb->saturated = (uint32_t)(ax != pg__sat64(ax) || ay != pg__sat64(ay) || alpha != pg__sat64(alpha));
             sb->accel = pg_v2(pg__sat64(ax), pg__sat64(ay));
             sb->alpha = pg__sat64(alpha);
         }
@@ -264,6 +280,7 @@ void pg__solve(pg_world *w)
         const solver_body *sb = &bodies[active[i]];
         pg_fix w0 = b->w;
         int was_inside = pg__in_position_envelope(b->origin);
+        if (sb->saturated) pg__count_saturations(w, 1u);
         /* the contact solve may have left a velocity past the caps: clamp it (counted) */
         pg__body_store_velocity(w, b, sb->v, rotation ? sb->w : b->w); /* rotation off pauses spin */
         b->center = sb->c;

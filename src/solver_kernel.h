@@ -50,6 +50,9 @@ typedef struct solver_body {
                              START). Both ends of v are within the kernel's bounds (2^29),
                              so dv fits int32; w_pre, after an angular integration, within
                              +-2^31, so dw needs int64 */
+    uint32_t saturated;   /* nonzero when a velocity of this body was clamped to the
+                             kernel's bounds in this step: counted once in stats.saturations
+                             at the write-back */
 } solver_body;
 
 typedef struct softness {
@@ -133,6 +136,8 @@ static inline void store_velocity(solver_body *b, const velocity *v)
     b->v.x = clamp_velocity(v->x);
     b->v.y = clamp_velocity(v->y);
     b->w = clamp_velocity(v->w);
+    /* v == VELOCITY_MAX takes this path too, unclamped */
+    b->saturated |= (uint32_t)(b->v.x != v->x || b->v.y != v->y || b->w != v->w);
 }
 
 /* The linear part of a row: what apply_row does when gA = gB = 0. */

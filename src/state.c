@@ -554,6 +554,7 @@ static void decode_bodies(source *r, pg_world *w, const pg_world_def *caps, size
                     md.mass = b.mass;
                     md.inertia = b.inertia;
                     md.center = b.local_center;
+                    md.area = 0; /* not read: the struct is passed whole */
                     if (pg__mass_data_problem(md, (flags & PG_BODY_FLAG_FIXED_ROTATION) == 0) != NULL)
                         invalid(r, at, "body.mass or body.inertia (outside the envelope: its inverse leaves Q25.38)");
                 }
@@ -570,18 +571,18 @@ static void decode_bodies(source *r, pg_world *w, const pg_world_def *caps, size
             b.origin = pg_v2_sub(b.center, pg_rot_apply(b.rot, b.local_center));
         }
         if (r->body_info != NULL) {
-            r->body_info[5u * i] = used ? 1u + (uint32_t)b.type : 0u;
-            r->body_info[5u * i + 1u] = used ? b.first_shape : PG_NULL_INDEX;
-            r->body_info[5u * i + 2u] = b.shape_count;
-            r->body_info[5u * i + 3u] = used ? (uint32_t)pg__body_is_active(&b) : 0u;
-            r->body_info[5u * i + 4u] = used ? b.island : PG_NULL_INDEX;
+            r->body_info[(size_t)5u * i] = used ? 1u + (uint32_t)b.type : 0u;
+            r->body_info[(size_t)5u * i + 1u] = used ? b.first_shape : PG_NULL_INDEX;
+            r->body_info[(size_t)5u * i + 2u] = b.shape_count;
+            r->body_info[(size_t)5u * i + 3u] = used ? (uint32_t)pg__body_is_active(&b) : 0u;
+            r->body_info[(size_t)5u * i + 4u] = used ? b.island : PG_NULL_INDEX;
         }
         if (w != NULL) w->bodies[i] = b;
     }
     if (r->body_info != NULL) { /* islands name used bodies */
         for (i = 0; i < n && r->error_field == NULL; ++i) {
-            uint32_t island = r->body_info[5u * i + 4u];
-            if (r->body_info[5u * i] && island != PG_NULL_INDEX && (island >= n || !r->body_info[5u * island]))
+            uint32_t island = r->body_info[(size_t)5u * i + 4u];
+            if (r->body_info[(size_t)5u * i] && island != PG_NULL_INDEX && (island >= n || !r->body_info[(size_t)5u * island]))
                 invalid(r, start, "body.island (not a used body)");
         }
     }
@@ -643,8 +644,8 @@ static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size
             if (r->error_field == NULL && pg__validate_geometry(&sh.geometry) != PG_OK) invalid(r, at, "shape.geometry");
             /* a moving body's shapes reach less far than a static one's (validation pass:
              * the bodies, read before the shapes, are in body_info) */
-            if (r->error_field == NULL && r->body_info != NULL && sh.body < r->n_bodies && r->body_info[5u * sh.body] != 0u &&
-                pg__geometry_reach(&sh.geometry) > pg__body_reach_limit((pg_body_type)(r->body_info[5u * sh.body] - 1u)))
+            if (r->error_field == NULL && r->body_info != NULL && sh.body < r->n_bodies && r->body_info[(size_t)5u * sh.body] != 0u &&
+                pg__geometry_reach(&sh.geometry) > pg__body_reach_limit((pg_body_type)(r->body_info[(size_t)5u * sh.body] - 1u)))
                 invalid(r, at, "shape.geometry (reaches farther from its body's origin than the body's type allows)");
             if (r->error_field == NULL && r->body_info != NULL && sh.geometry.kind == PG_SHAPE_CHAIN_SEGMENT && sh.body < r->n_bodies &&
                 r->body_info[5u * sh.body] != 1u + (uint32_t)PG_BODY_STATIC)
@@ -669,9 +670,9 @@ static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size
          * by it and met once; every used shape is on its owner's list */
         uint32_t b;
         for (b = 0; b < r->n_bodies && r->error_field == NULL; ++b) {
-            uint32_t sidx = r->body_info[5u * b + 1u], k2;
-            if (!r->body_info[5u * b]) continue;
-            for (k2 = 0; k2 < r->body_info[5u * b + 2u]; ++k2) {
+            uint32_t sidx = r->body_info[(size_t)5u * b + 1u], k2;
+            if (!r->body_info[(size_t)5u * b]) continue;
+            for (k2 = 0; k2 < r->body_info[(size_t)5u * b + 2u]; ++k2) {
                 if (sidx >= n || r->shape_owner[sidx] != b || r->shape_mark[sidx]) { invalid(r, start, "shape lists (body.first_shape, shape.next, shape.body)"); break; }
                 r->shape_mark[sidx] = 1;
                 sidx = r->shape_next[sidx];
@@ -679,7 +680,7 @@ static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size
             if (r->error_field == NULL && sidx != PG_NULL_INDEX) invalid(r, start, "shape lists (body.shape_count)");
         }
         for (i = 0; i < n && r->error_field == NULL; ++i) /* owners are used bodies */
-            if (r->shape_owner[i] != PG_NULL_INDEX && (r->shape_owner[i] >= r->n_bodies || !r->body_info[5u * r->shape_owner[i]]))
+            if (r->shape_owner[i] != PG_NULL_INDEX && (r->shape_owner[i] >= r->n_bodies || !r->body_info[(size_t)5u * r->shape_owner[i]]))
                 invalid(r, start, "shape.body (not a used body)");
         for (i = 0; i < n && r->error_field == NULL; ++i)
             if (r->shape_owner[i] != PG_NULL_INDEX && !r->shape_mark[i]) invalid(r, start, "shape lists (a shape is on no list)");
@@ -790,7 +791,7 @@ static void decode_broadphase(source *r, pg_world *w, const pg_world_def *caps, 
         at = r->pos;
         if (take_u32(r, "broadphase.shape") != i) invalid(r, at, "broadphase.shape");
         at = r->pos;
-        if (take(r, "broadphase.active") != r->body_info[5u * owner + 3u]) invalid(r, at, "broadphase.active");
+        if (take(r, "broadphase.active") != r->body_info[(size_t)5u * owner + 3u]) invalid(r, at, "broadphase.active");
     }
     if (r->shape_owner == NULL) r->pos = r->error_field == NULL ? start + length : r->pos;
 }

@@ -181,7 +181,7 @@ pg_world_stats pg_world_get_stats(const pg_world *world)
     pg_world_stats s;
     uint32_t i;
     if (world == NULL) {
-        pg_world_stats zero = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+        pg_world_stats zero = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
         return zero;
     }
     s = world->stats;

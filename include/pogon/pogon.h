@@ -224,6 +224,15 @@ typedef struct pg_world_stats {
     uint32_t envelope_exits;   /**< times a step carried a body's origin out of +-1000 m, all
                                     time (beyond it precision falls and at +-32768 m positions
                                     stop: see pg_body_limits) */
+    uint32_t saturations;      /**< values a step clamped to the range of its formats, all
+                                    time (saturates): a body's velocity in the contact solver
+                                    beyond +-8192 m/s or rad/s (once per body and step), a
+                                    contact point's impulse held at the solver's bound of
+                                    8192 m/s (once per point and step), an acceleration or
+                                    angular acceleration from forces beyond +-32768 (once per
+                                    body and step). Results stay defined; a nonzero count says
+                                    the scene left what the formats hold (mass ratios far
+                                    past 1:1000, forces far past the envelope) */
 } pg_world_stats;
 /** The world's counts now. */
 pg_world_stats pg_world_get_stats(const pg_world *world);
