@@ -575,7 +575,7 @@ static void test_damage_is_located_and_versions_named(void **state)
     assert_true(reseal(copy, s.size));
     assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INVALID_ARGUMENT);
     assert_string_equal(pg_world_last_error(dst.t.w),
-                        "PG_ERR_INVALID_ARGUMENT: snapshot format version 3 at offset 4; this build reads version 4 only (save it again with this build)");
+                        "PG_ERR_INVALID_ARGUMENT: snapshot format version 3 at offset 4; this build reads version 5 only (save it again with this build)");
     assert_true(pg_world_hash(dst.t.w) == h);
     t_free(copy);
     free_snapshot(&s);

@@ -1,0 +1,143 @@
+/* distance_joint.c — the distance joint: two anchors held at a length, as a rigid rod
+ * or a spring, with optional minimum and maximum lengths (docs/joints.md). Its def and
+ * setters here; its rows through the solver's stages in distance_joint_solver.c. */
+#include "def_cookie.h"
+#include "error.h"
+#include "intmath.h"
+#include "joint_def.h"
+#include "joint_pool.h"
+
+#define LENGTH_MIN ((pg_fix)328)   /* 0.005 m: the linear slop; shorter has no direction */
+#define LENGTH_MAX PG_FIX_C(100)
+
+pg_distance_joint_def pg_default_distance_joint_def(void)
+{
+    pg_distance_joint_def d;
+    d.body_a.index = d.body_a.generation = 0;
+    d.body_b = d.body_a;
+    d.local_anchor_a = d.local_anchor_b = pg_v2_zero();
+    d.length = PG_FIX_ONE;
+    d.enable_spring = 0;
+    d.hertz = 0;
+    d.damping_ratio = 0;
+    d.enable_limit = 0;
+    d.min_length = 0;
+    d.max_length = LENGTH_MAX;
+    d.collide_connected = 0;
+    d.user_data = 0;
+    d.pg__cookie = PG__DEF_COOKIE;
+    return d;
+}
+
+static pg_result check_length(const pg_world *world, pg_fix length)
+{
+    if (length < LENGTH_MIN || length > LENGTH_MAX) return pg__fail_value(world, PG_ERR_ENVELOPE, "distance joint length", length, "m is outside 0.005..100 m");
+    return PG_OK;
+}
+
+static pg_result check_limits(const pg_world *world, pg_fix lo, pg_fix hi)
+{
+    if (lo < 0 || lo > LENGTH_MAX) return pg__fail_value(world, PG_ERR_ENVELOPE, "distance joint min_length", lo, "m is outside 0..100 m");
+    if (hi < 0 || hi > LENGTH_MAX) return pg__fail_value(world, PG_ERR_ENVELOPE, "distance joint max_length", hi, "m is outside 0..100 m");
+    if (lo > hi) return pg__fail_value(world, PG_ERR_INVALID_ARGUMENT, "distance joint min_length", lo, "m is above max_length");
+    return PG_OK;
+}
+
+pg_result pg_distance_joint_create(pg_world *world, const pg_distance_joint_def *def, pg_joint_id *out)
+{
+    pg_joint j = {0};
+    pg_result r;
+    if (out != NULL) out->index = out->generation = 0;
+    if (world == NULL || def == NULL || out == NULL) return PG_ERR_NULL;
+    if (def->pg__cookie != PG__DEF_COOKIE)
+        return pg__fail(world, PG_ERR_INVALID_ARGUMENT,
+                        "the def was not made by pg_default_distance_joint_def(): start from it and change the fields you need");
+    r = pg__joint_check_bodies(world, "pg_distance_joint_create", def->body_a, def->body_b, def->local_anchor_a, def->local_anchor_b, &j);
+    if (r == PG_OK) r = check_length(world, def->length);
+    if (r == PG_OK) r = pg__joint_check_softness(world, def->hertz, def->damping_ratio, 1);
+    if (r == PG_OK) r = check_limits(world, def->min_length, def->max_length);
+    if (r != PG_OK) return r;
+    j.type = PG_JOINT_DISTANCE;
+    j.length = def->length;
+    j.hertz = def->hertz;
+    j.damping = def->damping_ratio;
+    j.lower = def->min_length;
+    j.upper = def->max_length;
+    j.flags = (def->enable_spring ? PG_JOINT_FLAG_SPRING : 0u) | (def->enable_limit ? PG_JOINT_FLAG_LIMIT : 0u) |
+              (def->collide_connected ? PG_JOINT_FLAG_COLLIDE : 0u);
+    j.user_data = def->user_data;
+    return pg__joint_add(world, &j, out);
+}
+
+pg_result pg_distance_joint_set_length(pg_world *world, pg_joint_id id, pg_fix length)
+{
+    pg_result r;
+    pg_joint *j = pg__joint_of_type(world, id, PG_JOINT_DISTANCE, "pg_distance_joint_set_length", &r);
+    if (j == NULL) return r;
+    if ((r = check_length(world, length)) != PG_OK) return r;
+    j->length = length;
+    pg__joint_wake(world, j);
+    return PG_OK;
+}
+
+pg_result pg_distance_joint_set_spring(pg_world *world, pg_joint_id id, int enable, pg_fix hertz, pg_fix damping_ratio)
+{
+    pg_result r;
+    pg_joint *j = pg__joint_of_type(world, id, PG_JOINT_DISTANCE, "pg_distance_joint_set_spring", &r);
+    if (j == NULL) return r;
+    if ((r = pg__joint_check_softness(world, hertz, damping_ratio, 1)) != PG_OK) return r;
+    j->flags = enable ? j->flags | PG_JOINT_FLAG_SPRING : j->flags & ~(uint32_t)PG_JOINT_FLAG_SPRING;
+    j->hertz = hertz;
+    j->damping = damping_ratio;
+    pg__joint_wake(world, j);
+    return PG_OK;
+}
+
+pg_result pg_distance_joint_set_limits(pg_world *world, pg_joint_id id, int enable, pg_fix min_length, pg_fix max_length)
+{
+    pg_result r;
+    pg_joint *j = pg__joint_of_type(world, id, PG_JOINT_DISTANCE, "pg_distance_joint_set_limits", &r);
+    if (j == NULL) return r;
+    if ((r = check_limits(world, min_length, max_length)) != PG_OK) return r;
+    j->flags = enable ? j->flags | PG_JOINT_FLAG_LIMIT : j->flags & ~(uint32_t)PG_JOINT_FLAG_LIMIT;
+    j->lower = min_length;
+    j->upper = max_length;
+    if (!enable) j->lower_impulse = j->upper_impulse = 0;
+    pg__joint_wake(world, j);
+    return PG_OK;
+}
+
+pg_fix pg_distance_joint_current_length(const pg_world *world, pg_joint_id id)
+{
+    const pg_joint *j = pg__joint_of_type_const(world, id, PG_JOINT_DISTANCE);
+    pg_vec2 pa, pb;
+    int64_t dx, dy;
+    if (j == NULL) return 0;
+    pa = pg_v2_add(world->bodies[j->body_a].center, pg__joint_world_lever(world, j->body_a, j->anchor_a));
+    pb = pg_v2_add(world->bodies[j->body_b].center, pg__joint_world_lever(world, j->body_b, j->anchor_b));
+    dx = pg__sat64((int64_t)pb.x - pa.x); /* beyond 32767 m the length saturates */
+    dy = pg__sat64((int64_t)pb.y - pa.y);
+    return pg__sat64((int64_t)pg__sqrt_nearest((uint64_t)(dx * dx + dy * dy)));
+}
+
+pg_result pg_distance_joint_get_def(const pg_world *world, pg_joint_id id, pg_distance_joint_def *out)
+{
+    const pg_joint *j = pg__joint_of_type_const(world, id, PG_JOINT_DISTANCE);
+    if (world == NULL || out == NULL) return PG_ERR_NULL;
+    if (j == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_distance_joint_get_def: not a valid distance joint handle");
+    *out = pg_default_distance_joint_def();
+    out->body_a = pg__body_handle(world, j->body_a);
+    out->body_b = pg__body_handle(world, j->body_b);
+    out->local_anchor_a = j->anchor_a;
+    out->local_anchor_b = j->anchor_b;
+    out->length = j->length;
+    out->enable_spring = (j->flags & PG_JOINT_FLAG_SPRING) != 0;
+    out->hertz = j->hertz;
+    out->damping_ratio = j->damping;
+    out->enable_limit = (j->flags & PG_JOINT_FLAG_LIMIT) != 0;
+    out->min_length = j->lower;
+    out->max_length = j->upper;
+    out->collide_connected = (j->flags & PG_JOINT_FLAG_COLLIDE) != 0;
+    out->user_data = j->user_data;
+    return PG_OK;
+}
