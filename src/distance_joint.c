@@ -1,7 +1,8 @@
 /* distance_joint.c — the distance joint: two anchors held at a length, as a rigid rod
- * or a spring, with optional minimum and maximum lengths (docs/joints.md). Its def and
- * setters here; its rows through the solver's stages in distance_joint_solver.c. */
+ * or a spring, with optional minimum and maximum lengths (docs/joints.md): its def and
+ * setters, and its rows through the solver's stages. */
 #include "def_cookie.h"
+#include "distance_joint.h"
 #include "error.h"
 #include "intmath.h"
 #include "joint_def.h"
@@ -140,4 +141,86 @@ pg_result pg_distance_joint_get_def(const pg_world *world, pg_joint_id id, pg_di
     out->collide_connected = (j->flags & PG_JOINT_FLAG_COLLIDE) != 0;
     out->user_data = j->user_data;
     return PG_OK;
+}
+
+/* ---- the rows ------------------------------------------------------------------------------ */
+/* One row along the rod's direction at the step's start carries the length (rigid or a
+ * spring) and both limits; each pass measures the length where the bodies are now. */
+
+static int has_spring(const pg_joint *j) { return (j->flags & PG_JOINT_FLAG_SPRING) != 0; }
+static int has_limit(const pg_joint *j) { return (j->flags & PG_JOINT_FLAG_LIMIT) != 0 && j->lower < j->upper; }
+
+void pg__distance_joint_prepare(joint_constraint *c, const step_context *ctx)
+{
+    const pg_joint *j = c->src;
+    int64_t dx = (int64_t)c->B.fixed_point.x - c->A.fixed_point.x, dy = (int64_t)c->B.fixed_point.y - c->A.fixed_point.y;
+    pg_dir d;
+    if (dx * dx + dy * dy < (int64_t)LENGTH_MIN * LENGTH_MIN / 4) { /* anchors together: no direction, take x */
+        d.x = 1 << 30;
+        d.y = 0;
+    } else {
+        d = pg_dir_normalize(dx, dy);
+    }
+    pg__joint_row_linear(&c->axial, &c->A, &c->B, d, c->A.lever, c->B.lever);
+    c->soft = pg__joint_rigid_softness(ctx->n);
+    c->soft2 = pg__joint_spring_softness(j->hertz, j->damping, ctx->n);
+    c->axial_imp = has_spring(j) && j->hertz == 0 ? 0 : j->axial_impulse;
+    c->lower_imp = has_limit(j) ? j->lower_impulse : 0;
+    c->upper_imp = has_limit(j) ? j->upper_impulse : 0;
+}
+
+void pg__distance_joint_warm_start(joint_constraint *c, solver_body *bodies)
+{
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    if (!c->axial.on) return;
+    joint_row_apply(&c->axial, &A, &B, c->axial_imp + c->lower_imp - c->upper_imp);
+    joint_store(&bodies[c->A.slot], &A, c->A.active);
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+/* |pB - pA| now, Q16.16 m (saturating past 32767 m) */
+static int64_t length_now(const joint_constraint *c, const solver_body *bodies)
+{
+    int64_t ax, ay, bx, by, dx, dy;
+    joint_anchor_now(&c->A, bodies, &ax, &ay);
+    joint_anchor_now(&c->B, bodies, &bx, &by);
+    dx = clamp64(bx - ax, INT32_MAX);
+    dy = clamp64(by - ay, INT32_MAX);
+    return (int64_t)pg__sqrt_nearest((uint64_t)(dx * dx + dy * dy));
+}
+
+void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+{
+    const pg_joint *j = c->src;
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    int64_t len;
+    if (!c->axial.on) return;
+    len = length_now(c, bodies);
+    if (!has_spring(j)) {
+        joint_row_solve(&c->axial, &c->axial_imp, &A, &B, len - j->length, &c->soft, use_bias);
+    } else if (j->hertz > 0) { /* a spring acts in both passes */
+        joint_row_solve(&c->axial, &c->axial_imp, &A, &B, len - j->length, &c->soft2, 1);
+    }
+    if (has_limit(j)) {
+        joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, len - j->lower, 1, &c->soft, use_bias, ctx->n);
+        joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, len - j->upper, -1, &c->soft, use_bias, ctx->n);
+    }
+    joint_store(&bodies[c->A.slot], &A, c->A.active);
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+void pg__distance_joint_store(const joint_constraint *c, pg_joint *j)
+{
+    j->axial_impulse = (pg_fix)c->axial_imp;
+    j->lower_impulse = (pg_fix)c->lower_imp;
+    j->upper_impulse = (pg_fix)c->upper_imp;
+}
+
+void pg__distance_joint_impulse(const joint_constraint *c, int64_t out[3])
+{
+    int64_t p = pg__joint_row_impulse(&c->axial, c->axial_imp + c->lower_imp - c->upper_imp);
+    /* along the rod, from A's anchor to B's: on B */
+    out[0] = row_round(p * c->axial.d.x, 30);
+    out[1] = row_round(p * c->axial.d.y, 30);
+    out[2] = 0;
 }

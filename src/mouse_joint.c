@@ -1,7 +1,9 @@
 /* mouse_joint.c — the mouse (target) joint: pulls a body's anchor toward a world point
- * as a spring with a maximum force, what dragging uses (docs/joints.md). Its def and
- * setters here; its rows in mouse_joint_solver.c. */
+ * as a spring with a maximum force, what dragging uses (docs/joints.md): its def and
+ * setters, and its rows through the solver's stages. */
 #include "body.h"
+#include "intmath.h"
+#include "mouse_joint.h"
 #include "def_cookie.h"
 #include "error.h"
 #include "joint_def.h"
@@ -117,4 +119,67 @@ pg_result pg_mouse_joint_get_def(const pg_world *world, pg_joint_id id, pg_mouse
     out->max_force = j->max_motor;
     out->user_data = j->user_data;
     return PG_OK;
+}
+
+/* ---- the rows ------------------------------------------------------------------------------ */
+/* A point block whose side A is the target (a point that does not move), soft in both
+ * passes, with the impulse's magnitude capped at max_force h: in lambda units the cap is
+ * on |K'^-1 L| <= max_force h S (joint_rows.h). */
+
+void pg__mouse_joint_prepare(joint_constraint *c, const step_context *ctx)
+{
+    const pg_joint *j = c->src;
+    int64_t fh = pg__mul64_shr(j->max_motor, ctx->h_q32, 32); /* Q16 N s */
+    c->A.fixed_point = j->target;
+    pg__joint_point_init(&c->point, &c->A, &c->B);
+    c->soft = pg__joint_spring_softness(j->hertz, j->damping, ctx->n);
+    c->imp[0] = j->point_impulse[0];
+    c->imp[1] = j->point_impulse[1];
+    c->motor_max = clamp64(pg__mul64_shr(c->point.S, fh, 38), LAMBDA_MAX);
+}
+
+void pg__mouse_joint_warm_start(joint_constraint *c, solver_body *bodies)
+{
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    if (c->point.S == 0) return;
+    joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+{
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    int64_t bx, by, vx, vy, nx, ny, qx, qy, q;
+    (void)ctx;
+    (void)use_bias; /* a spring: the same in both passes */
+    if (c->point.S == 0) return;
+    joint_anchor_now(&c->B, bodies, &bx, &by);
+    joint_point_speed(&A, &B, c->A.lever, c->B.lever, &vx, &vy);
+    nx = c->imp[0] + joint_soft_delta(vx, row_round(c->soft.bias_rate * clamp64(bx - c->A.fixed_point.x, INT32_MAX), 16), c->imp[0], &c->soft, 1);
+    ny = c->imp[1] + joint_soft_delta(vy, row_round(c->soft.bias_rate * clamp64(by - c->A.fixed_point.y, INT32_MAX), 16), c->imp[1], &c->soft, 1);
+    nx = clamp64(nx, LAMBDA_MAX);
+    ny = clamp64(ny, LAMBDA_MAX);
+    qx = row_round(c->point.kinv[0] * nx + c->point.kinv[1] * ny, 30);
+    qy = row_round(c->point.kinv[1] * nx + c->point.kinv[2] * ny, 30);
+    q = (int64_t)pg__sqrt_nearest((uint64_t)(qx * qx + qy * qy)); /* |q| <= 2^30: the squares fit */
+    if (q > c->motor_max) { /* scale back to the cap, rounding toward zero */
+        nx = nx * c->motor_max / q;
+        ny = ny * c->motor_max / q;
+    }
+    joint_point_apply(&c->point, &A, &B, nx - c->imp[0], ny - c->imp[1]);
+    c->imp[0] = nx;
+    c->imp[1] = ny;
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+void pg__mouse_joint_store(const joint_constraint *c, pg_joint *j)
+{
+    j->point_impulse[0] = (pg_fix)c->imp[0];
+    j->point_impulse[1] = (pg_fix)c->imp[1];
+}
+
+void pg__mouse_joint_impulse(const joint_constraint *c, int64_t out[3])
+{
+    pg__joint_point_impulse(&c->point, c->imp, out);
+    out[2] = 0;
 }

@@ -1,7 +1,8 @@
 /* prismatic_joint.c — the prismatic joint: body B slides along an axis fixed in body A,
- * with optional limits and a motor (docs/joints.md). Its def and setters here; its rows
- * in prismatic_joint_solver.c. */
+ * with optional limits and a motor (docs/joints.md): its def and setters, and its rows
+ * through the solver's stages. */
 #include "def_cookie.h"
+#include "prismatic_joint.h"
 #include "error.h"
 #include "intmath.h"
 #include "joint_def.h"
@@ -145,4 +146,93 @@ pg_result pg_prismatic_joint_get_def(const pg_world *world, pg_joint_id id, pg_p
     out->collide_connected = (j->flags & PG_JOINT_FLAG_COLLIDE) != 0;
     out->user_data = j->user_data;
     return PG_OK;
+}
+
+/* ---- the rows ------------------------------------------------------------------------------ */
+/* Box2D v3's rows, one after the other: the motor and the limits along the axis, then
+ * the row across the axis and the angle. A's lever arm of the linear rows reaches B's
+ * anchor (rA + d), so the rows turn A as a force at B's anchor would. */
+
+static int has_limit(const pg_joint *j) { return (j->flags & PG_JOINT_FLAG_LIMIT) != 0; }
+static int has_motor(const pg_joint *j) { return (j->flags & PG_JOINT_FLAG_MOTOR) != 0; }
+
+void pg__prismatic_joint_prepare(joint_constraint *c, const step_context *ctx)
+{
+    const pg_joint *j = c->src;
+    pg_rot rA = pg_rot_from_angle(c->A.fixed_angle);
+    pg_vec2 axis = pg_rot_apply(rA, j->axis);
+    pg_dir d = pg_dir_normalize(axis.x, axis.y), n;
+    pg_vec2 gap = pg_v2(pg__sat64((int64_t)c->B.fixed_point.x - c->A.fixed_point.x), pg__sat64((int64_t)c->B.fixed_point.y - c->A.fixed_point.y));
+    pg_vec2 reach = pg_v2_add(c->A.lever, gap);
+    n.x = -d.y;
+    n.y = d.x;
+    c->axis0 = axis;
+    pg__joint_row_linear(&c->axial, &c->A, &c->B, d, reach, c->B.lever);
+    pg__joint_row_linear(&c->perp, &c->A, &c->B, n, reach, c->B.lever);
+    pg__joint_row_angular(&c->angular, &c->A, &c->B);
+    c->soft = pg__joint_rigid_softness(ctx->n);
+    c->imp[0] = j->point_impulse[0];
+    c->axial_imp = j->axial_impulse;
+    c->motor_imp = has_motor(j) ? j->motor_impulse : 0;
+    c->lower_imp = has_limit(j) ? j->lower_impulse : 0;
+    c->upper_imp = has_limit(j) ? j->upper_impulse : 0;
+    c->motor_max = pg__joint_row_cap(c->axial.K, j->max_motor, ctx->h_q32);
+    if (c->motor_imp > c->motor_max) c->motor_imp = c->motor_max;
+    if (c->motor_imp < -c->motor_max) c->motor_imp = -c->motor_max;
+}
+
+void pg__prismatic_joint_warm_start(joint_constraint *c, solver_body *bodies)
+{
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    if (!c->axial.on) return;
+    joint_row_apply(&c->axial, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
+    joint_row_apply(&c->perp, &A, &B, c->imp[0]);
+    if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
+    joint_store(&bodies[c->A.slot], &A, c->A.active);
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+{
+    const pg_joint *j = c->src;
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    int64_t ax, ay, bx, by, dx, dy;
+    pg_vec2 axis;
+    pg_angle aA;
+    if (!c->axial.on) return;
+    aA = joint_angle_now(&c->A, bodies);
+    axis = pg_rot_apply(pg_rot_from_angle(aA), j->axis); /* Q16.16 unit */
+    joint_anchor_now(&c->A, bodies, &ax, &ay);
+    joint_anchor_now(&c->B, bodies, &bx, &by);
+    dx = clamp64(bx - ax, INT32_MAX);
+    dy = clamp64(by - ay, INT32_MAX);
+    if (has_motor(j)) joint_motor_solve(&c->axial, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
+    if (has_limit(j)) {
+        int64_t t = pg__round_shift64(dx * axis.x + dy * axis.y, 16);
+        joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, t - j->lower, 1, &c->soft, use_bias, ctx->n);
+        joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, t - j->upper, -1, &c->soft, use_bias, ctx->n);
+    }
+    joint_row_solve(&c->perp, &c->imp[0], &A, &B, pg__round_shift64(dy * axis.x - dx * axis.y, 16), &c->soft, use_bias);
+    joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(joint_angle_now(&c->B, bodies) - aA - j->reference_angle),
+                    &c->soft, use_bias);
+    joint_store(&bodies[c->A.slot], &A, c->A.active);
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+void pg__prismatic_joint_store(const joint_constraint *c, pg_joint *j)
+{
+    j->point_impulse[0] = (pg_fix)c->imp[0];
+    j->axial_impulse = (pg_fix)c->axial_imp;
+    j->motor_impulse = (pg_fix)c->motor_imp;
+    j->lower_impulse = (pg_fix)c->lower_imp;
+    j->upper_impulse = (pg_fix)c->upper_imp;
+}
+
+void pg__prismatic_joint_impulse(const joint_constraint *c, int64_t out[3])
+{
+    int64_t pa = pg__joint_row_impulse(&c->axial, c->motor_imp + c->lower_imp - c->upper_imp);
+    int64_t pp = pg__joint_row_impulse(&c->perp, c->imp[0]);
+    out[0] = row_round(pa * c->axial.d.x + pp * c->perp.d.x, 30);
+    out[1] = row_round(pa * c->axial.d.y + pp * c->perp.d.y, 30);
+    out[2] = pg__joint_row_impulse(&c->angular, c->axial_imp);
 }

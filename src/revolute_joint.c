@@ -1,6 +1,7 @@
 /* revolute_joint.c — the revolute joint: a pin, with optional angle limits and a motor
- * (docs/joints.md). Its def and setters here; its rows in revolute_joint_solver.c. */
+ * (docs/joints.md): its def and setters, and its rows through the solver's stages. */
 #include "def_cookie.h"
+#include "revolute_joint.h"
 #include "error.h"
 #include "joint_def.h"
 #include "joint_pool.h"
@@ -118,4 +119,73 @@ pg_result pg_revolute_joint_get_def(const pg_world *world, pg_joint_id id, pg_re
     out->collide_connected = (j->flags & PG_JOINT_FLAG_COLLIDE) != 0;
     out->user_data = j->user_data;
     return PG_OK;
+}
+
+/* ---- the rows ------------------------------------------------------------------------------ */
+/* The pin is a 2x2 point block; the motor and the two limits share one angular row
+ * (wB - wA). Order in a pass, as Box2D v3's: motor, limits, then the point, so the point
+ * has the last word. */
+
+static int has_limit(const pg_joint *j) { return (j->flags & PG_JOINT_FLAG_LIMIT) != 0; }
+static int has_motor(const pg_joint *j) { return (j->flags & PG_JOINT_FLAG_MOTOR) != 0; }
+
+void pg__revolute_joint_prepare(joint_constraint *c, const step_context *ctx)
+{
+    const pg_joint *j = c->src;
+    pg__joint_point_init(&c->point, &c->A, &c->B);
+    pg__joint_row_angular(&c->angular, &c->A, &c->B);
+    c->soft = pg__joint_rigid_softness(ctx->n);
+    c->imp[0] = j->point_impulse[0];
+    c->imp[1] = j->point_impulse[1];
+    c->motor_imp = has_motor(j) ? j->motor_impulse : 0;
+    c->lower_imp = has_limit(j) ? j->lower_impulse : 0;
+    c->upper_imp = has_limit(j) ? j->upper_impulse : 0;
+    c->motor_max = pg__joint_row_cap(c->angular.K, j->max_motor, ctx->h_q32);
+    if (c->motor_imp > c->motor_max) c->motor_imp = c->motor_max;
+    if (c->motor_imp < -c->motor_max) c->motor_imp = -c->motor_max;
+}
+
+void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
+{
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    if (c->point.S == 0) return;
+    joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
+    if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
+    joint_store(&bodies[c->A.slot], &A, c->A.active);
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+{
+    const pg_joint *j = c->src;
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    int64_t ax, ay, bx, by;
+    if (c->point.S == 0) return;
+    if (has_motor(j)) joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
+    if (has_limit(j)) {
+        pg_angle rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
+        int64_t angle = pg_angle_to_radians(rel);
+        joint_limit_solve(&c->angular, &c->lower_imp, &A, &B, angle - j->lower, 1, &c->soft, use_bias, ctx->n);
+        joint_limit_solve(&c->angular, &c->upper_imp, &A, &B, angle - j->upper, -1, &c->soft, use_bias, ctx->n);
+    }
+    joint_anchor_now(&c->A, bodies, &ax, &ay);
+    joint_anchor_now(&c->B, bodies, &bx, &by);
+    joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
+    joint_store(&bodies[c->A.slot], &A, c->A.active);
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+void pg__revolute_joint_store(const joint_constraint *c, pg_joint *j)
+{
+    j->point_impulse[0] = (pg_fix)c->imp[0];
+    j->point_impulse[1] = (pg_fix)c->imp[1];
+    j->motor_impulse = (pg_fix)c->motor_imp;
+    j->lower_impulse = (pg_fix)c->lower_imp;
+    j->upper_impulse = (pg_fix)c->upper_imp;
+}
+
+void pg__revolute_joint_impulse(const joint_constraint *c, int64_t out[3])
+{
+    pg__joint_point_impulse(&c->point, c->imp, out);
+    out[2] = pg__joint_row_impulse(&c->angular, c->motor_imp + c->lower_imp - c->upper_imp);
 }

@@ -1,6 +1,7 @@
 /* weld_joint.c — the weld joint: two bodies held together, rigid or soft
- * (docs/joints.md). Its def and setters here; its rows in weld_joint_solver.c. */
+ * (docs/joints.md): its def and setters, and its rows through the solver's stages. */
 #include "def_cookie.h"
+#include "weld_joint.h"
 #include "error.h"
 #include "joint_def.h"
 #include "joint_pool.h"
@@ -82,4 +83,61 @@ pg_result pg_weld_joint_get_def(const pg_world *world, pg_joint_id id, pg_weld_j
     out->collide_connected = (j->flags & PG_JOINT_FLAG_COLLIDE) != 0;
     out->user_data = j->user_data;
     return PG_OK;
+}
+
+/* ---- the rows ------------------------------------------------------------------------------ */
+/* Box2D v3's split: the angle as one angular row, then the anchors as a 2x2 point block.
+ * A part of hertz 0 is rigid (the joints' softness in the solve pass, none in the relax
+ * pass); a part with hertz is a spring in both passes. */
+
+void pg__weld_joint_prepare(joint_constraint *c, const step_context *ctx)
+{
+    const pg_joint *j = c->src;
+    pg__joint_point_init(&c->point, &c->A, &c->B);
+    pg__joint_row_angular(&c->angular, &c->A, &c->B);
+    c->soft = j->hertz > 0 ? pg__joint_spring_softness(j->hertz, j->damping, ctx->n) : pg__joint_rigid_softness(ctx->n);
+    c->soft2 = j->hertz2 > 0 ? pg__joint_spring_softness(j->hertz2, j->damping2, ctx->n) : pg__joint_rigid_softness(ctx->n);
+    c->imp[0] = j->point_impulse[0];
+    c->imp[1] = j->point_impulse[1];
+    c->axial_imp = j->axial_impulse;
+}
+
+void pg__weld_joint_warm_start(joint_constraint *c, solver_body *bodies)
+{
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    if (c->point.S == 0) return;
+    joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
+    if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
+    joint_store(&bodies[c->A.slot], &A, c->A.active);
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+{
+    const pg_joint *j = c->src;
+    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    int64_t ax, ay, bx, by;
+    pg_angle rel;
+    (void)ctx;
+    if (c->point.S == 0) return;
+    rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
+    joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(rel), &c->soft2, use_bias || j->hertz2 > 0);
+    joint_anchor_now(&c->A, bodies, &ax, &ay);
+    joint_anchor_now(&c->B, bodies, &bx, &by);
+    joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias || j->hertz > 0);
+    joint_store(&bodies[c->A.slot], &A, c->A.active);
+    joint_store(&bodies[c->B.slot], &B, c->B.active);
+}
+
+void pg__weld_joint_store(const joint_constraint *c, pg_joint *j)
+{
+    j->point_impulse[0] = (pg_fix)c->imp[0];
+    j->point_impulse[1] = (pg_fix)c->imp[1];
+    j->axial_impulse = (pg_fix)c->axial_imp;
+}
+
+void pg__weld_joint_impulse(const joint_constraint *c, int64_t out[3])
+{
+    pg__joint_point_impulse(&c->point, c->imp, out);
+    out[2] = pg__joint_row_impulse(&c->angular, c->axial_imp);
 }
