@@ -315,9 +315,22 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     }
     if (size < OFF_FORMAT + 2u) return truncated(error, size, "header", "format_version", -1, OFF_FORMAT + 2u);
     in.format_version = get_u16(data + OFF_FORMAT);
-    if (in.format_version != PG_REPLAY_FORMAT_VERSION)
-        return value_error(error, OFF_FORMAT, "header", "format_version", -1, "format version ", in.format_version,
-                           " is not supported: this build reads version 1");
+    if (in.format_version != PG_REPLAY_FORMAT_VERSION) {
+        /* format 1 lacks the joint commands (3); its records are format 3 records, so
+         * `pogon-replay upgrade` converts such a file by rewriting its header */
+        msg m = set_error(error, OFF_FORMAT, "header", "format_version", -1, -1, "format version ");
+        pg__text_u64(&m, in.format_version);
+        if (in.format_version < PG_REPLAY_FORMAT_VERSION) {
+            pg__text_put(&m, " is older than this build's ");
+            pg__text_u64(&m, PG_REPLAY_FORMAT_VERSION);
+            pg__text_put(&m, ": convert the file with `pogon-replay upgrade FILE`");
+        } else {
+            pg__text_put(&m, " is newer than this build's ");
+            pg__text_u64(&m, PG_REPLAY_FORMAT_VERSION);
+            pg__text_put(&m, ": read it with a newer pogon");
+        }
+        return PG_ERR_INVALID_ARGUMENT;
+    }
     if (size < PG_REPLAY_HEADER_SIZE) return truncated(error, size, "header", "header", -1, PG_REPLAY_HEADER_SIZE);
     in.engine_major = get_u16(data + OFF_ENGINE_MAJOR);
     in.engine_minor = get_u16(data + OFF_ENGINE_MINOR);
@@ -327,7 +340,7 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     in.section_count = get_u32(data + OFF_SECTIONS);
     if (in.flags != 0)
         return value_error(error, OFF_FLAGS, "header", "flags", -1, "flags ", in.flags,
-                           " are not defined in format version 1 (must be 0)");
+                           " are not defined in this format version (must be 0)");
     if (in.checkpoint_interval == 0)
         return value_error(error, OFF_INTERVAL, "header", "checkpoint_interval", -1, "checkpoint interval ", 0,
                            " is invalid (must be at least 1)");

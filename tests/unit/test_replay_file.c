@@ -140,7 +140,7 @@ static void test_write_read_play(void **state)
     assert_int_equal(size, size2);
     assert_memory_equal(file, file2, size);
     assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
-    assert_int_equal(info.format_version, 1);
+    assert_int_equal(info.format_version, PG_REPLAY_FORMAT_VERSION);
     assert_int_equal(info.engine_major, POGON_VERSION_MAJOR);
     assert_int_equal(info.checkpoint_interval, 10);
     assert_int_equal(info.section_count, PG_SECTION_COUNT);
