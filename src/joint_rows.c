@@ -160,7 +160,7 @@ static softness precise_soft(pg_fix hertz, pg_fix zeta, uint32_t n)
     return s;
 }
 
-softness pg__joint_rigid_softness(uint32_t n_per_second) { return precise_soft(PG_FIX_C(60), PG_FIX_C(5), n_per_second); }
+softness pg__joint_rigid_softness(uint32_t n_per_second) { return precise_soft(PG_FIX_C(1000), PG_FIX_C(5), n_per_second); }
 
 softness pg__joint_spring_softness(pg_fix hertz, pg_fix zeta, uint32_t n_per_second) { return precise_soft(hertz, zeta, n_per_second); }
 

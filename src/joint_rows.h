@@ -74,7 +74,9 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
 void pg__joint_row_linear(joint_row *r, const joint_side *A, const joint_side *B, pg_dir d, pg_vec2 rA, pg_vec2 rB);
 /* An angular row (wB - wA). */
 void pg__joint_row_angular(joint_row *r, const joint_side *A, const joint_side *B);
-/* The joints' rigid softness for the step: 60 Hz capped at a quarter of the substep rate, damping ratio 5. */
+/* The joints' rigid softness for the step: a quarter of the substep rate (60 Hz at 60
+ * steps of 4 substeps; the stiffest the soft step keeps stable, and a joint's give under
+ * load goes as 1 / hertz^2), damping ratio 5. */
 softness pg__joint_rigid_softness(uint32_t n_per_second);
 /* A spring's softness, its hertz capped at a quarter of the substep rate as the contacts'. */
 softness pg__joint_spring_softness(pg_fix hertz, pg_fix zeta, uint32_t n_per_second);
