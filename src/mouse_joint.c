@@ -122,8 +122,8 @@ pg_result pg_mouse_joint_get_def(const pg_world *world, pg_joint_id id, pg_mouse
 }
 
 /* ---- the rows ------------------------------------------------------------------------------ */
-/* A point block whose side A is the target (a point that does not move), soft in both
- * passes, with the impulse's magnitude capped at max_force h: in lambda units the cap is
+/* A point block whose side A is the target (a point that does not move), soft, in the
+ * solve pass only, with the impulse's magnitude capped at max_force h: in lambda units the cap is
  * on |K'^-1 L| <= max_force h S (joint_rows.h). */
 
 void pg__mouse_joint_prepare(joint_constraint *c, const step_context *ctx)
@@ -142,6 +142,8 @@ void pg__mouse_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     joint_store(&bodies[c->B.slot], &B, c->B.active);
 }
@@ -151,10 +153,11 @@ void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     int64_t bx, by, vx, vy, nx, ny, qx, qy, q;
     (void)ctx;
-    (void)use_bias; /* a spring: the same in both passes */
-    if (c->point.S == 0) return;
+    if (c->point.S == 0 || !use_bias) return; /* a spring: the solve pass only */
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_anchor_now(&c->B, bodies, &bx, &by);
-    joint_point_speed(&A, &B, c->A.lever, c->B.lever, &vx, &vy);
+    joint_point_speed(&A, &B, c->A.lever_now, c->B.lever_now, &vx, &vy);
     nx = c->imp[0] + joint_soft_delta(vx, row_round(c->soft.bias_rate * clamp64(bx - c->A.fixed_point.x, INT32_MAX), 16), c->imp[0], &c->soft, 1);
     ny = c->imp[1] + joint_soft_delta(vy, row_round(c->soft.bias_rate * clamp64(by - c->A.fixed_point.y, INT32_MAX), 16), c->imp[1], &c->soft, 1);
     nx = clamp64(nx, LAMBDA_MAX);

@@ -88,7 +88,7 @@ pg_result pg_weld_joint_get_def(const pg_world *world, pg_joint_id id, pg_weld_j
 /* ---- the rows ------------------------------------------------------------------------------ */
 /* Box2D v3's split: the angle as one angular row, then the anchors as a 2x2 point block.
  * A part of hertz 0 is rigid (the joints' softness in the solve pass, none in the relax
- * pass); a part with hertz is a spring in both passes. */
+ * passes); a part with hertz is a soft spring in the solve pass only. */
 
 void pg__weld_joint_prepare(joint_constraint *c, const step_context *ctx)
 {
@@ -106,6 +106,8 @@ void pg__weld_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
     joint_store(&bodies[c->A.slot], &A, c->A.active);
@@ -120,11 +122,13 @@ void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_c
     pg_angle rel;
     (void)ctx;
     if (c->point.S == 0) return;
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
-    joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(rel), &c->soft2, use_bias || j->hertz2 > 0);
+    if (use_bias || j->hertz2 == 0) joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(rel), &c->soft2, use_bias);
     joint_anchor_now(&c->A, bodies, &ax, &ay);
     joint_anchor_now(&c->B, bodies, &bx, &by);
-    joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias || j->hertz > 0);
+    if (use_bias || j->hertz == 0) joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
     joint_store(&bodies[c->A.slot], &A, c->A.active);
     joint_store(&bodies[c->B.slot], &B, c->B.active);
 }
