@@ -2,7 +2,9 @@
 # check-layers.sh — prove that the library's files form layers: no file depends,
 # directly or through others, on a file that depends on it.
 #
-# Usage: scripts/check-layers.sh [SRC_DIR]    (default: src beside this script)
+# Usage: scripts/check-layers.sh [--markdown] [SRC_DIR]    (default: src beside this script)
+#   --markdown  print the layers inside a ``` block, as docs/architecture.md's generated
+#               region holds them (tools/docs/regions.js checks that it matches)
 #
 # A module is a file name without its extension: world.c and world.h are the module
 # "world"; a header without a .c (wide.h) is a module of its own; X_internal.h belongs
@@ -18,9 +20,12 @@
 # The dependencies must have no cycle (tsort finds one). On success it prints the
 # layers, lowest first: a module's layer is one above the highest of what it depends
 # on, so a file may use only what sits in lower layers. docs/architecture.md shows
-# this output. Exit 0: acyclic; 1: a cycle or a misplaced declaration; 2: usage.
+# this output (--markdown) in a generated region, which the CTest test
+# docs_generated_regions compares with it. Exit 0: acyclic; 1: a cycle or a misplaced declaration; 2: usage.
 set -eu
 
+markdown=0
+if [ "${1:-}" = "--markdown" ]; then markdown=1; shift; fi
 src=${1:-$(dirname "$0")/../src}
 if [ ! -d "$src" ]; then
   echo "check-layers: no such directory: $src" >&2
@@ -98,6 +103,7 @@ if ! tsort "$tmp/edges" > "$tmp/order" 2> "$tmp/loop"; then
 fi
 
 # layers: tsort prints a module before what it depends on, so walk its order backwards
+[ "$markdown" -eq 0 ] || echo '```'
 awk '$1 != $2 { dep[$1] = dep[$1] " " $2 } END { for (m in dep) print m dep[m] }' "$tmp/edges" > "$tmp/deps"
 tac "$tmp/order" | awk 'FILENAME == ARGV[1] { n = split($0, a, " "); for (i = 2; i <= n; ++i) d[$1] = d[$1] " " a[i]; next }
   { l = 0; n = split(d[$1], a, " "); for (i = 1; i <= n; ++i) if (layer[a[i]] + 1 > l) l = layer[a[i]] + 1;
@@ -107,4 +113,5 @@ tac "$tmp/order" | awk 'FILENAME == ARGV[1] { n = split($0, a, " "); for (i = 2;
           for (x = 1; x <= k; ++x) for (y = x + 1; y <= k; ++y) if (s[y] < s[x]) { t = s[x]; s[x] = s[y]; s[y] = t }
           for (x = 1; x <= k; ++x) out = out " " s[x];
           printf "layer %d:%s\n", i, out } }' "$tmp/deps" -
+[ "$markdown" -eq 0 ] || echo '```'
 exit $status

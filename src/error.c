@@ -6,7 +6,7 @@
 static const char *const result_names[PG_RESULT_COUNT] = {
     "PG_OK", "PG_ERR_NULL", "PG_ERR_INVALID_ARGUMENT", "PG_ERR_STALE_HANDLE", "PG_ERR_CAPACITY",
     "PG_ERR_MEMORY", "PG_ERR_ENVELOPE", "PG_ERR_DEGENERATE", "PG_ERR_NOT_CONVEX", "PG_ERR_BODY_TYPE",
-    "PG_ERR_NOT_FOUND"};
+    "PG_ERR_NOT_FOUND", "PG_ERR_INCOMPATIBLE"};
 static const char *const result_messages[PG_RESULT_COUNT] = {
     "success",
     "a required pointer argument is NULL: pass a valid object or output pointer",
@@ -18,7 +18,8 @@ static const char *const result_messages[PG_RESULT_COUNT] = {
     "degenerate geometry (no area or length, or repeated/collinear points): fix the vertices",
     "polygon vertices do not form a convex polygon: pass the convex hull",
     "the operation does not apply to this body type (e.g. a force on a static body)",
-    "nothing was found"};
+    "nothing was found",
+    "the file was made by another numeric configuration, numerics or format version: use a build like its maker's, or upgrade an old format"};
 
 const char *pg_result_name(pg_result r)
 {

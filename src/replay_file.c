@@ -3,6 +3,7 @@
  * against the size the caller gave. */
 #include "pogon/replay_file.h"
 #include "pogon/scene_file.h"
+#include "numeric_config.h"
 #include "text.h"
 #include "world_internal.h" /* pg__fail: pg_replay_apply_frame's messages */
 
@@ -114,12 +115,14 @@ enum {
     OFF_ENGINE_MINOR = 12,
     OFF_ENGINE_PATCH = 14,
     OFF_FLAGS = 16,
-    OFF_INTERVAL = 20,
-    OFF_SECTIONS = 24,
-    OFF_SCENE_SIZE = 28,
-    OFF_HEADER_HASH = 32,
-    OFF_SCENE_TEXT = 40
+    OFF_NUMERIC_CONFIG = 20,
+    OFF_INTERVAL = 24,
+    OFF_SECTIONS = 28,
+    OFF_SCENE_SIZE = 32,
+    OFF_HEADER_HASH = 36,
+    OFF_SCENE_TEXT = 44
 };
+PG__STATIC_ASSERT(OFF_SCENE_TEXT == PG_REPLAY_HEADER_SIZE, replay_header_size);
 /* checkpoint record: tag u8, frame u32, hash u64, sections u64 x S, block hash u64 */
 static size_t checkpoint_size(uint32_t sections) { return 1u + 4u + 8u + 8u * (size_t)sections + 8u; }
 
@@ -148,6 +151,7 @@ pg_result pg_replay_writer_begin(pg_replay_writer *w, uint8_t *buffer, size_t ca
     put_u16(p + OFF_ENGINE_MINOR, POGON_VERSION_MINOR);
     put_u16(p + OFF_ENGINE_PATCH, POGON_VERSION_PATCH);
     put_u32(p + OFF_FLAGS, 0);
+    put_u32(p + OFF_NUMERIC_CONFIG, pg_numeric_config());
     put_u32(p + OFF_INTERVAL, checkpoint_interval);
     put_u32(p + OFF_SECTIONS, PG_SECTION_COUNT);
     put_u32(p + OFF_SCENE_SIZE, (uint32_t)scene_size);
@@ -284,6 +288,20 @@ static pg_result check_scene(const pg_replay_info *info, pg_world_def *def, pg_r
     return PG_OK;
 }
 
+/* PG_OK when `recorded` is this build's numeric configuration; otherwise
+ * PG_ERR_INCOMPATIBLE and a message naming both. */
+static pg_result numeric_config_error(uint32_t recorded, pg_replay_error *e)
+{
+    msg m;
+    if (recorded == pg_numeric_config()) return PG_OK;
+    m = set_error(e, OFF_NUMERIC_CONFIG, "header", "numeric_config", -1, -1, "recorded with ");
+    pg__numeric_config_put(&m, recorded);
+    pg__text_put(&m, "; this build has ");
+    pg__numeric_config_put(&m, pg_numeric_config());
+    pg__text_put(&m, " (config.h): replay it with a build configured like the recorder");
+    return PG_ERR_INCOMPATIBLE;
+}
+
 pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error)
 {
     pg_replay_info in;
@@ -315,27 +333,32 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     }
     if (size < OFF_FORMAT + 2u) return truncated(error, size, "header", "format_version", -1, OFF_FORMAT + 2u);
     in.format_version = get_u16(data + OFF_FORMAT);
+    info->format_version = in.format_version;
+    info->size = size;
     if (in.format_version != PG_REPLAY_FORMAT_VERSION) {
-        /* format 1 lacks the joint commands (3); its records are format 3 records, so
-         * `pogon-replay upgrade` converts such a file by rewriting its header */
         msg m = set_error(error, OFF_FORMAT, "header", "format_version", -1, -1, "format version ");
         pg__text_u64(&m, in.format_version);
+        if (in.format_version == 0) {
+            pg__text_put(&m, " does not exist: the header is corrupt");
+            return PG_ERR_INVALID_ARGUMENT;
+        }
         if (in.format_version < PG_REPLAY_FORMAT_VERSION) {
             pg__text_put(&m, " is older than this build's ");
             pg__text_u64(&m, PG_REPLAY_FORMAT_VERSION);
-            pg__text_put(&m, ": convert the file with `pogon-replay upgrade FILE`");
+            pg__text_put(&m, ": convert it with `pogon-replay upgrade IN OUT` (pg_replay_upgrade)");
         } else {
             pg__text_put(&m, " is newer than this build's ");
             pg__text_u64(&m, PG_REPLAY_FORMAT_VERSION);
-            pg__text_put(&m, ": read it with a newer pogon");
+            pg__text_put(&m, ": read it with the pogon that wrote it, or a later one");
         }
-        return PG_ERR_INVALID_ARGUMENT;
+        return PG_ERR_INCOMPATIBLE;
     }
     if (size < PG_REPLAY_HEADER_SIZE) return truncated(error, size, "header", "header", -1, PG_REPLAY_HEADER_SIZE);
     in.engine_major = get_u16(data + OFF_ENGINE_MAJOR);
     in.engine_minor = get_u16(data + OFF_ENGINE_MINOR);
     in.engine_patch = get_u16(data + OFF_ENGINE_PATCH);
     in.flags = get_u32(data + OFF_FLAGS);
+    in.numeric_config = get_u32(data + OFF_NUMERIC_CONFIG);
     in.checkpoint_interval = get_u32(data + OFF_INTERVAL);
     in.section_count = get_u32(data + OFF_SECTIONS);
     if (in.flags != 0)
@@ -350,7 +373,7 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     stored = get_u64(data + OFF_HEADER_HASH);
     computed = hash_range(data, 0, OFF_HEADER_HASH);
     if (stored != computed)
-        return hash_error(error, OFF_HEADER_HASH, "header", "header_hash", -1, "header hash mismatch (bytes 0..31)",
+        return hash_error(error, OFF_HEADER_HASH, "header", "header_hash", -1, "header hash mismatch (bytes 0..35)",
                           stored, computed);
 
     /* the file ends with the fixed-size end record */
@@ -529,7 +552,9 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     r = check_scene(&in, &def, error);
     if (r != PG_OK) return r;
     *info = in;
-    return PG_OK;
+    /* sound, but stepped with other numerics than this build's: playing it here could
+     * only diverge, so say which switch differs instead */
+    return numeric_config_error(in.numeric_config, error);
 }
 
 /* Offset of checkpoint `index` in a valid file (scans the records). */
@@ -643,6 +668,8 @@ pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const
     p->frame = 0;
     p->checkpoints_checked = 0;
     p->command_failures = 0;
+    r = numeric_config_error(info->numeric_config, error);
+    if (r != PG_OK) return r;
     r = check_scene(info, &def, error);
     if (r != PG_OK) return r;
     r = pg_world_create(&def, memory, memory_size, &p->world);

@@ -7,12 +7,15 @@
  * snapshot changes nothing.
  *
  * Layout (docs/formats.md, "Snapshots"):
- *   "PGSN" u16 version u32 max_bodies u32 max_shapes u32 max_contacts
+ *   "PGSN" u16 version, u16 engine major, minor, patch (version.h), u32 numeric
+ *   configuration (config.h), u32 max_bodies u32 max_shapes u32 max_contacts
  *   then for each section s in order: u8 s, u32 byte length, the section's bytes, u64
  *   the section's hash (FNV-1a of its bytes, as pg_world_section_hashes gives it);
  *   then u64 checksum, FNV-1a of every byte before it. Restoring checks the checksum
- *   (and names the section whose hash fails) before it reads a value, then validates
- *   the structure, then writes the world.
+ *   (and names the section whose hash fails) before it reads a value, then refuses a
+ *   snapshot of other numerics (another numeric configuration, or another major.minor
+ *   version: they step differently), then validates the structure, then writes the
+ *   world.
  * Derived data is not stored: a body's origin and rotation come from its centre and
  * angle, a shape's collision form from its geometry, every cached world geometry is
  * recomputed at the next step.
@@ -20,13 +23,17 @@
 #include "pogon/replay.h"
 #include "wide.h"
 #include "text.h"
+#include "numeric_config.h"
 #include "world_internal.h"
 
 #define SNAPSHOT_MAGIC 0x4E534750u /* "PGSN" */
-#define SNAPSHOT_VERSION 5u /* 2: inverse mass and inertia are derived, not stored; 3: a
+#define SNAPSHOT_VERSION 6u /* 2: inverse mass and inertia are derived, not stored; 3: a
                               contact point's push_impulse; 4: section hashes and a checksum;
-                              5: joints */
-#define SNAPSHOT_HEADER_SIZE 18u /* magic, version, three capacities */
+                              5: the engine version and the numeric configuration; 6: joints */
+#define SNAPSHOT_HEADER_SIZE 28u /* magic, version, engine version, numeric configuration,
+                                    three capacities */
+#define SNAPSHOT_OFF_ENGINE 6u   /* u16 major, minor, patch */
+#define SNAPSHOT_OFF_CONFIG 12u  /* u32 pg_numeric_config() */
 
 /* What a world can hold, from the code that writes each value. Restoring refuses a
  * value beyond these: only corruption makes one, and the step's arithmetic relies on
@@ -326,6 +333,13 @@ static void encode_all(const pg_world *w, sink *s)
     emit_u32(s, SNAPSHOT_MAGIC);
     emit(s, SNAPSHOT_VERSION);
     emit(s, SNAPSHOT_VERSION >> 8);
+    emit(s, POGON_VERSION_MAJOR);
+    emit(s, (uint32_t)POGON_VERSION_MAJOR >> 8);
+    emit(s, POGON_VERSION_MINOR);
+    emit(s, (uint32_t)POGON_VERSION_MINOR >> 8);
+    emit(s, POGON_VERSION_PATCH);
+    emit(s, (uint32_t)POGON_VERSION_PATCH >> 8);
+    emit_u32(s, pg_numeric_config());
     emit_u32(s, w->def.max_bodies);
     emit_u32(s, w->def.max_shapes);
     emit_u32(s, w->def.max_contacts);
@@ -931,6 +945,10 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
     if (take_u32(r, "magic") != SNAPSHOT_MAGIC) invalid(r, 0, "magic");
     at = r->pos;
     if ((take(r, "version") | take(r, "version") << 8) != SNAPSHOT_VERSION) invalid(r, at, "version");
+    take_u32(r, "engine_version"); /* major, minor: checked with the checksum, before decoding */
+    take(r, "engine_version");     /* patch: any */
+    take(r, "engine_version");
+    take_u32(r, "numeric_config"); /* checked with the checksum */
     at = r->pos;
     if (take_u32(r, "max_bodies") != caps->max_bodies) invalid(r, at, "max_bodies (must equal the world's)");
     at = r->pos;
@@ -963,10 +981,36 @@ static uint64_t read_u64_at(const uint8_t *p)
     return v;
 }
 
+static uint32_t u16_at(const uint8_t *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8; }
+
+/* PG_OK when the snapshot was saved by numerics like this build's: the same numeric
+ * configuration and the same major.minor version (the patch version never changes a
+ * bit, version.h); otherwise PG_ERR_INCOMPATIBLE and a message naming both. */
+static pg_result check_numerics(const uint8_t *p, pg__text *t)
+{
+    uint32_t major = u16_at(p + SNAPSHOT_OFF_ENGINE), minor = u16_at(p + SNAPSHOT_OFF_ENGINE + 2u);
+    uint32_t patch = u16_at(p + SNAPSHOT_OFF_ENGINE + 4u);
+    uint32_t config = u16_at(p + SNAPSHOT_OFF_CONFIG) | u16_at(p + SNAPSHOT_OFF_CONFIG + 2u) << 16;
+    if (major == POGON_VERSION_MAJOR && minor == POGON_VERSION_MINOR && config == pg_numeric_config()) return PG_OK;
+    pg__text_put(t, "snapshot of pogon ");
+    pg__text_u64(t, major);
+    pg__text_char(t, '.');
+    pg__text_u64(t, minor);
+    pg__text_char(t, '.');
+    pg__text_u64(t, patch);
+    pg__text_put(t, ", ");
+    pg__numeric_config_put(t, config);
+    pg__text_put(t, "; this is " POGON_VERSION_STRING ", ");
+    pg__numeric_config_put(t, pg_numeric_config());
+    pg__text_put(t, ": other numerics");
+    return PG_ERR_INCOMPATIBLE;
+}
+
 /* Whether the snapshot's bytes are the ones saved: its magic and version (so that a
- * snapshot of another version is named as one, not as damage), then the checksum. On
- * failure writes a message with the offset into t and returns 0. */
-static int check_integrity(const uint8_t *p, size_t size, pg__text *t)
+ * snapshot of another version is named as one, not as damage), then the checksum, then
+ * its numerics (check_numerics). On failure writes a message with the offset into t and
+ * returns PG_ERR_INVALID_ARGUMENT or PG_ERR_INCOMPATIBLE. */
+static pg_result check_integrity(const uint8_t *p, size_t size, pg__text *t)
 {
     size_t start[PG_SECTION_COUNT], length[PG_SECTION_COUNT];
     uint32_t version;
@@ -975,22 +1019,22 @@ static int check_integrity(const uint8_t *p, size_t size, pg__text *t)
         pg__text_put(t, "corrupt snapshot at offset ");
         pg__text_u64(t, size);
         pg__text_put(t, ": it ends there, before any snapshot's end (cut short)");
-        return 0;
+        return PG_ERR_INVALID_ARGUMENT;
     }
     if (((uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24) != SNAPSHOT_MAGIC) {
         pg__text_put(t, "corrupt snapshot at offset 0, field magic (not a pogon snapshot)");
-        return 0;
+        return PG_ERR_INVALID_ARGUMENT;
     }
-    version = (uint32_t)p[4] | (uint32_t)p[5] << 8;
+    version = u16_at(p + 4);
     if (version != SNAPSHOT_VERSION) {
         pg__text_put(t, "snapshot format version ");
         pg__text_u64(t, version);
         pg__text_put(t, " at offset 4; this build reads version ");
         pg__text_u64(t, SNAPSHOT_VERSION);
         pg__text_put(t, " only (save it again with this build)");
-        return 0;
+        return PG_ERR_INCOMPATIBLE;
     }
-    if (pg_hash_bytes(PG_HASH_SEED, p, size - 8u) == read_u64_at(p + size - 8u)) return 1;
+    if (pg_hash_bytes(PG_HASH_SEED, p, size - 8u) == read_u64_at(p + size - 8u)) return check_numerics(p, t);
     /* name the section whose bytes no longer match its hash, when the framing allows */
     if (sections_of(p, size, start, length))
         for (k = 0; k < PG_SECTION_COUNT; ++k)
@@ -1000,23 +1044,25 @@ static int check_integrity(const uint8_t *p, size_t size, pg__text *t)
                 pg__text_put(t, ", section ");
                 pg__text_put(t, pg_section_name((pg_section)k));
                 pg__text_put(t, " (its bytes do not match its hash)");
-                return 0;
+                return PG_ERR_INVALID_ARGUMENT;
             }
     pg__text_put(t, "corrupt snapshot at offset ");
     pg__text_u64(t, size - 8u);
     pg__text_put(t, ", field checksum (the bytes before it do not match it: damaged or cut)");
-    return 0;
+    return PG_ERR_INVALID_ARGUMENT;
 }
 
 pg_result pg_world_snapshot_restore(pg_world *world, const void *snapshot, size_t size)
 {
     source r;
     uint32_t i, bodies = 0;
-    char detail[134]; /* what last_error holds after "PG_ERR_INVALID_ARGUMENT: " */
+    char detail[140]; /* what last_error holds after "PG_ERR_INCOMPATIBLE: " */
     pg__text t = pg__text_in(detail, sizeof detail);
+    pg_result verdict;
     if (world == NULL) return PG_ERR_NULL;
     if (snapshot == NULL) return pg__fail(world, PG_ERR_NULL, "pg_world_snapshot_restore: snapshot is NULL");
-    if (!check_integrity((const uint8_t *)snapshot, size, &t)) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, detail);
+    verdict = check_integrity((const uint8_t *)snapshot, size, &t);
+    if (verdict != PG_OK) return pg__fail(world, verdict, detail);
     r.p = (const uint8_t *)snapshot;
     r.size = size;
     r.pos = 0;

@@ -36,4 +36,25 @@
 #error "PG_FAST_DIV64 must be 0 or 1"
 #endif
 
+/** @name Numeric configuration
+ * The switches above that change results, packed into one 32-bit value: replay files
+ * and snapshots record it, and a file of another configuration is refused on load with
+ * a message naming both (a build with another sine table steps differently, so its
+ * checkpoints could never match). pg_numeric_config() returns the library's value.
+ *
+ * Bits 0-3: PG_TRIG_TABLE_BITS (8..12). Bits 4-31: 0, free for the next switch.
+ * A switch that changes only speed or size, never a result (PG_FAST_DIV64), is not in it.
+ *
+ * Adding a switch that changes results (or leaves a feature out): give it the next free
+ * bits below (a _SHIFT and a _MASK), OR its value into PG_NUMERIC_CONFIG, and add a row
+ * naming it to the table in src/numeric_config.c (its messages). Make its value 0 mean
+ * what builds without the switch did, so that files recorded before it existed keep
+ * loading in default builds.
+ * @{ */
+#define PG_NUMCFG_TRIG_BITS_SHIFT 0   /**< where PG_TRIG_TABLE_BITS sits */
+#define PG_NUMCFG_TRIG_BITS_MASK 0xFu /**< its width: 4 bits */
+/** This configuration, as compiled (pg_numeric_config() gives the library's). */
+#define PG_NUMERIC_CONFIG (((unsigned long)PG_TRIG_TABLE_BITS & PG_NUMCFG_TRIG_BITS_MASK) << PG_NUMCFG_TRIG_BITS_SHIFT)
+/** @} */
+
 #endif

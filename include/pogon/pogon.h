@@ -90,6 +90,9 @@ typedef enum pg_result {
                                 counter-clockwise) */
     PG_ERR_BODY_TYPE,        /**< the operation does not apply to this body type */
     PG_ERR_NOT_FOUND,        /**< a query found nothing (e.g. no free position) */
+    PG_ERR_INCOMPATIBLE,     /**< a file is sound but this build cannot use it: another
+                                numeric configuration (pg_numeric_config), numerics
+                                version or format version; the message names both */
     PG_RESULT_COUNT          /**< the number of codes (not a result) */
 } pg_result;
 
@@ -97,6 +100,16 @@ typedef enum pg_result {
 const char *pg_result_name(pg_result r);
 /** A sentence saying what the code means and what to do about it (static text). */
 const char *pg_result_message(pg_result r);
+
+/* ---- build -------------------------------------------------------------------- */
+/** The numeric configuration this library was built with: PG_NUMERIC_CONFIG (config.h),
+ * the compile-time switches that change results, as replay files and snapshots record it. */
+uint32_t pg_numeric_config(void);
+/** A configuration in words, e.g. "a 12-bit sine table", into buffer (always
+ * NUL-terminated, cut to capacity). Bits no field of this build knows are named as
+ * "unknown switches 0x...". Returns the length of the whole text, so a return >=
+ * capacity means it was cut. */
+size_t pg_numeric_config_describe(uint32_t config, char *buffer, size_t capacity);
 
 /* ---- handles ---------------------------------------------------------------------- */
 /** A handle to a body: a slot and its generation, so a handle to a destroyed body is

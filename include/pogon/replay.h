@@ -198,7 +198,9 @@ pg_result pg_world_snapshot_save(const pg_world *world, void *buffer, size_t cap
  * PG_ERR_INVALID_ARGUMENT with the offset and field in pg_world_last_error(). A snapshot
  * carries a hash per section and a checksum over all its bytes, checked before anything
  * else: any one damaged byte is refused, with the offset of the section it lies in. A
- * snapshot of another format version is refused as one (docs/snapshots.md). Behind the
+ * sound snapshot this build cannot continue returns PG_ERR_INCOMPATIBLE, naming both
+ * sides: another format version, another numeric configuration (pg_numeric_config) or
+ * another major.minor engine version (docs/snapshots.md). Behind the
  * checksum, corrupt also means anything no world can hold: broken links between bodies, shapes and contacts,
  * shapes or mass data pg_shape_create would refuse, and values beyond what the setters
  * and the step ever write (velocities beyond 8192 m/s or rad/s per component, forces and

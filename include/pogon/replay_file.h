@@ -43,8 +43,9 @@ extern "C" {
 #endif
 
 #define PG_REPLAY_MAGIC "PGREPLAY"          /**< 8 bytes, no terminator in the file */
-#define PG_REPLAY_FORMAT_VERSION 3u         /**< the format version this build writes and reads */
-#define PG_REPLAY_HEADER_SIZE 40u           /**< fixed header, hash included */
+#define PG_REPLAY_FORMAT_VERSION 3u         /**< the format version this build writes and reads
+                                                 (pg_replay_upgrade converts older ones) */
+#define PG_REPLAY_HEADER_SIZE 44u           /**< fixed header, hash included */
 #define PG_REPLAY_TRAILER_SIZE 29u          /**< the end record: tag, frames, final hash, block hash, checksum */
 #define PG_REPLAY_MAX_SECTIONS 16u          /**< section hashes a checkpoint may carry */
 #define PG_REPLAY_MAX_FRAME_COMMANDS 65535u /**< commands in one frame (u16 count) */
@@ -73,7 +74,8 @@ typedef struct pg_replay_info {
     uint32_t engine_major;          /**< POGON_VERSION_MAJOR of the recorder */
     uint32_t engine_minor;          /**< POGON_VERSION_MINOR of the recorder */
     uint32_t engine_patch;          /**< POGON_VERSION_PATCH of the recorder */
-    uint32_t flags;                 /**< 0 in format version 1 */
+    uint32_t flags;                 /**< 0 in format version 2 */
+    uint32_t numeric_config;        /**< pg_numeric_config() of the recorder (config.h) */
     uint32_t checkpoint_interval;   /**< N: a checkpoint at frames 0, N, 2N, ... */
     uint32_t section_count;         /**< section hashes per checkpoint (PG_SECTION_COUNT when written) */
     const char *scene_text;         /**< points into the file; not NUL-terminated */
@@ -92,13 +94,32 @@ typedef struct pg_replay_info {
 
 /** Validate a whole replay file. PG_OK fills *info; otherwise PG_ERR_INVALID_ARGUMENT
  * (PG_ERR_NULL for NULL pointers) and *error (may be NULL) describes the first problem.
- * The scene text is checked with pg_scene_read_def. */
+ * The scene text is checked with pg_scene_read_def.
+ * PG_ERR_INCOMPATIBLE: the file is not one this build can play, and *error says why:
+ *   - another format version (info->format_version and size are set, the rest is 0): an
+ *     older one converts with pg_replay_upgrade (`pogon-replay upgrade IN OUT`);
+ *   - a sound file recorded with another numeric configuration (config.h; e.g.
+ *     "recorded with a 12-bit sine table; this build has an 8-bit sine table"): *info is
+ *     filled, so the file can be shown, but pg_replay_player_begin refuses it. */
 pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error);
 
 /** A checkpoint of a valid file, by index 0 .. checkpoint_count-1 (frame = index * N).
  * sections receives min(section_count, PG_SECTION_COUNT) hashes; the rest are zeroed. */
 pg_result pg_replay_checkpoint(const uint8_t *data, const pg_replay_info *info, uint32_t index,
                                uint64_t *hash, uint64_t sections[PG_SECTION_COUNT]);
+
+/** Convert a replay file of an older format version into this build's, stamping it with
+ * `numeric_config` (pass pg_numeric_config(), and prove the stamp by playing the result:
+ * pogon-replay upgrade does). The old file is checked first (its header, its checksums,
+ * then the whole converted file with pg_replay_read); the records, hashes and engine
+ * version are kept, so nothing recorded changes. A file already of this format version
+ * is copied as it is. `out` must not overlap `data`. PG_ERR_MEMORY when `capacity` is
+ * short: *out_size (may be NULL) then holds the size needed. PG_ERR_INVALID_ARGUMENT
+ * and *error for a damaged file; PG_ERR_INCOMPATIBLE for a version this build does not
+ * know. Format 1 had no numeric configuration; format 2 adds it after the flags;
+ * format 3 adds the joint commands (its header is format 2's). */
+pg_result pg_replay_upgrade(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
+                            size_t *out_size, pg_replay_error *error);
 
 /* ---- writer ------------------------------------------------------------------------- */
 /** A replay file being written into caller memory (pg_replay_writer_begin()). */
@@ -165,7 +186,8 @@ typedef struct pg_replay_frame_result {
 
 /** Load the scene of a file validated by pg_replay_read into a new world in `memory`
  * (aligned to 8) and compare checkpoint 0 (*first, may be NULL, reports it; a mismatch
- * is not an error). Scene errors give PG_ERR_INVALID_ARGUMENT and *error. */
+ * is not an error). Scene errors give PG_ERR_INVALID_ARGUMENT and *error; a file of
+ * another numeric configuration PG_ERR_INCOMPATIBLE. */
 pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const pg_replay_info *info, void *memory,
                                  size_t memory_size, pg_replay_frame_result *first, pg_replay_error *error);
 /** 1 when every frame has been played. */

@@ -2,7 +2,8 @@
  * (src/replay_file.c).
  *
  * For any input bytes:
- *   - pg_replay_read returns PG_OK or PG_ERR_INVALID_ARGUMENT, never reads past the input
+ *   - pg_replay_read returns PG_OK, PG_ERR_INVALID_ARGUMENT or PG_ERR_INCOMPATIBLE (another
+ *     format version or numeric configuration), never reads past the input
  *     (libFuzzer hands over a heap block of exactly `size` bytes, ASan watches its end),
  *     and on failure reports an offset <= size, a region, a field and a NUL-terminated
  *     message;
@@ -52,18 +53,18 @@ static void repair(uint8_t *d, size_t n)
     size_t scene, pos, block, records_end, cs;
     uint32_t interval, sections, frame = 0, checkpoints = 0;
     if (n < PG_REPLAY_HEADER_SIZE) return;
-    put_u64(d + 32, hash(d, 32));
-    interval = get_u32(d + 20);
-    sections = get_u32(d + 24);
-    scene = get_u32(d + 28);
+    put_u64(d + 36, hash(d, 36));
+    interval = get_u32(d + 24);
+    sections = get_u32(d + 28);
+    scene = get_u32(d + 32);
     if (n < PG_REPLAY_HEADER_SIZE + 8u + PG_REPLAY_TRAILER_SIZE ||
         scene > n - PG_REPLAY_HEADER_SIZE - 8u - PG_REPLAY_TRAILER_SIZE) {
         if (n >= 8) put_u64(d + n - 8, hash(d, n - 8));
         return;
     }
-    put_u64(d + 40 + scene, hash(d + 40, scene));
+    put_u64(d + PG_REPLAY_HEADER_SIZE + scene, hash(d + PG_REPLAY_HEADER_SIZE, scene));
     records_end = n - PG_REPLAY_TRAILER_SIZE;
-    pos = block = 40 + scene + 8;
+    pos = block = PG_REPLAY_HEADER_SIZE + scene + 8;
     if (interval != 0 && sections >= 1 && sections <= PG_REPLAY_MAX_SECTIONS) {
         cs = 21u + 8u * sections;
         for (;;) {
@@ -173,8 +174,16 @@ static void read_one(const uint8_t *d, size_t n, int repaired)
     pg_replay_info info;
     pg_replay_error err;
     pg_result r = pg_replay_read(d, n, &info, &err);
+    if (r == PG_ERR_INCOMPATIBLE && info.format_version == PG_REPLAY_FORMAT_VERSION) {
+        /* sound, but of another numeric configuration: filled in, and refused by the player */
+        pg_replay_player p;
+        check(info.numeric_config != pg_numeric_config() && err.offset == 20, "incompatible for another reason");
+        check(pg_replay_player_begin(&p, d, &info, world_memory, sizeof world_memory, NULL, &err) == PG_ERR_INCOMPATIBLE,
+              "the player plays a file of another numeric configuration");
+        return;
+    }
     if (r != PG_OK) {
-        check(r == PG_ERR_INVALID_ARGUMENT, "unexpected result");
+        check(r == PG_ERR_INVALID_ARGUMENT || r == PG_ERR_INCOMPATIBLE, "unexpected result");
         check(err.offset <= n, "error offset beyond the input");
         check(err.region != NULL && err.field != NULL, "error without region or field");
         check(memchr(err.message, 0, sizeof err.message) != NULL && err.message[0] != '\0', "bad error message");

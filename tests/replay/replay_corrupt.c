@@ -3,6 +3,10 @@
  *   - one flipped bit in the header, the scene, a command, the checksum: exit 2 and a
  *     message naming an offset inside that region;
  *   - a truncated file, another format version: exit 2;
+ *   - a sound file of another numeric configuration: exit 2 naming the field and both
+ *     sine tables, never a divergence;
+ *   - a format 1 file: exit 2 saying how to upgrade it; `pogon-replay upgrade` gives back
+ *     the format 2 file byte for byte, and refuses to seal a damaged one;
  *   - one changed command, re-encoded, with its block hash and the file checksum fixed:
  *     the file is valid, and verify exits 1 naming the frame of that command.
  *
@@ -38,10 +42,11 @@ static uint8_t *slurp(const char *path, size_t *size)
     return buf;
 }
 
-/* Write `data` to WORK/name, run verify on it; returns the exit code, output in out. */
-static int run_verify(const char *name, const uint8_t *data, size_t size, char *out, size_t cap)
+/* Write `data` to WORK/name, run `pogon-replay VERB WORK/name [WORK/name.out]` (the
+ * second path for upgrade); returns the exit code, output in out. */
+static int run_tool(const char *verb, const char *name, const uint8_t *data, size_t size, char *out, size_t cap)
 {
-    char path[1024], cmd[2400];
+    char path[1024], cmd[3400];
     FILE *f, *p;
     size_t len = 0;
     int status;
@@ -51,7 +56,10 @@ static int run_verify(const char *name, const uint8_t *data, size_t size, char *
         fprintf(stderr, "cannot write %s\n", path);
         exit(2);
     }
-    snprintf(cmd, sizeof cmd, "'%s' verify '%s' 2>&1", tool, path);
+    if (strcmp(verb, "upgrade") == 0)
+        snprintf(cmd, sizeof cmd, "'%s' upgrade '%s' '%s.out' 2>&1", tool, path, path);
+    else
+        snprintf(cmd, sizeof cmd, "'%s' %s '%s' 2>&1", tool, verb, path);
     p = popen(cmd, "r");
     if (p == NULL) exit(2);
     while (len + 1 < cap) {
@@ -62,6 +70,11 @@ static int run_verify(const char *name, const uint8_t *data, size_t size, char *
     out[len] = '\0';
     status = pclose(p);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+static int run_verify(const char *name, const uint8_t *data, size_t size, char *out, size_t cap)
+{
+    return run_tool("verify", name, data, size, out, cap);
 }
 
 /* The offset the message names ("at offset N"), or -1. */
@@ -134,9 +147,10 @@ int main(int argc, char **argv)
     /* one bit in each region */
     flip_case("header magic", file, size, 3, 1, 3, 4);
     flip_case("header format version", file, size, 8, 0, 8, 9);
-    flip_case("header checkpoint interval", file, size, 21, 2, 0, PG_REPLAY_HEADER_SIZE);
+    flip_case("header numeric configuration", file, size, 20, 2, 0, PG_REPLAY_HEADER_SIZE);
+    flip_case("header checkpoint interval", file, size, 25, 2, 0, PG_REPLAY_HEADER_SIZE);
     flip_case("header engine version", file, size, 12, 0, 0, PG_REPLAY_HEADER_SIZE);
-    flip_case("header scene size", file, size, 29, 3, 0, PG_REPLAY_HEADER_SIZE);
+    flip_case("header scene size", file, size, 33, 3, 0, PG_REPLAY_HEADER_SIZE);
     flip_case("scene text", file, size, info.scene_offset + info.scene_size / 2, 4, (long)info.scene_offset,
               (long)info.records_offset);
 
@@ -201,11 +215,55 @@ int main(int argc, char **argv)
     expect(rc == 2 && named_offset(out) >= 0, what, out);
     copy = (uint8_t *)malloc(size);
     memcpy(copy, file, size);
-    copy[8] = 2;
-    put_u64(copy + 32, pg_hash_bytes(PG_HASH_SEED, copy, 32));
-    rc = run_verify("version2.pgr", copy, size, out, sizeof out);
-    expect(rc == 2 && named_offset(out) == 8 && strstr(out, "format_version") != NULL,
-           "format version 2 -> exit 2 naming offset 8, header.format_version", out);
+    copy[8] = (uint8_t)(PG_REPLAY_FORMAT_VERSION + 1u);
+    put_u64(copy + 36, pg_hash_bytes(PG_HASH_SEED, copy, 36));
+    rc = run_verify("newer.pgr", copy, size, out, sizeof out);
+    expect(rc == 2 && named_offset(out) == 8 && strstr(out, "format_version") != NULL &&
+               strstr(out, "is newer than this build's") != NULL,
+           "a newer format version -> exit 2 naming offset 8, header.format_version, newer", out);
+
+    /* another sine table, the file sealed as its recorder would: refused, not diverged */
+    memcpy(copy, file, size);
+    copy[20] = (uint8_t)(PG_TRIG_TABLE_BITS == 12 ? 8 : 12);
+    put_u64(copy + 36, pg_hash_bytes(PG_HASH_SEED, copy, 36));
+    put_u64(copy + size - 8, pg_hash_bytes(PG_HASH_SEED, copy, size - 8));
+    rc = run_verify("other_table.pgr", copy, size, out, sizeof out);
+    expect(rc == 2 && named_offset(out) == 20 && strstr(out, "header.numeric_config") != NULL &&
+               strstr(out, PG_TRIG_TABLE_BITS == 12 ? "recorded with an 8-bit sine table; this build has a 12-bit sine table"
+                                                    : "recorded with a 12-bit sine table; this build has") != NULL &&
+               strstr(out, "DIVERGED") == NULL,
+           "another sine table -> exit 2 naming offset 20, header.numeric_config and both tables", out);
+    rc = run_tool("info", "other_table.pgr", copy, size, out, sizeof out);
+    expect(rc == 2 && strstr(out, "numerics        a") != NULL && strstr(out, "header.numeric_config") != NULL,
+           "info on another sine table -> the header, the numeric configuration and the refusal, exit 2", out);
+
+    /* format 1: the same file without the numeric configuration (bytes 20..23) */
+    {
+        uint8_t *v1 = (uint8_t *)malloc(size - 4), *back;
+        size_t v1_size = size - 4, back_size = 0;
+        char path[1100];
+        memcpy(v1, file, 20);
+        memcpy(v1 + 20, file + 24, size - 24);
+        v1[8] = 1;
+        put_u64(v1 + 32, pg_hash_bytes(PG_HASH_SEED, v1, 32));
+        put_u64(v1 + v1_size - 8, pg_hash_bytes(PG_HASH_SEED, v1, v1_size - 8));
+        rc = run_verify("format1.pgr", v1, v1_size, out, sizeof out);
+        expect(rc == 2 && named_offset(out) == 8 && strstr(out, "convert it with `pogon-replay upgrade IN OUT`") != NULL,
+               "format 1 -> exit 2 naming offset 8 and the upgrade command", out);
+        rc = run_tool("upgrade", "format1.pgr", v1, v1_size, out, sizeof out);
+        snprintf(path, sizeof path, "%s/format1.pgr.out", work);
+        back = rc == 0 ? slurp(path, &back_size) : NULL;
+        expect(rc == 0 && back != NULL && back_size == size && memcmp(back, file, size) == 0,
+               "pogon-replay upgrade of the format 1 file -> exit 0, the format 2 file byte for byte", out);
+        free(back);
+        remove(path);
+        v1[v1_size / 2] ^= 0x20;
+        rc = run_tool("upgrade", "format1_damaged.pgr", v1, v1_size, out, sizeof out);
+        snprintf(path, sizeof path, "%s/format1_damaged.pgr.out", work);
+        expect(rc == 2 && named_offset(out) >= 0 && fopen(path, "rb") == NULL,
+               "pogon-replay upgrade of a damaged format 1 file -> exit 2 naming an offset, nothing written", out);
+        free(v1);
+    }
 
     /* checkpoint 0 altered with its block hash and the file checksum recomputed: its
      * section hash for bodies, then its state hash. Either way the state hash is no longer

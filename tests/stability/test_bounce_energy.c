@@ -8,6 +8,8 @@
  * to -): within a bounce semi-implicit Euler swings it by about g v h (GUIDE.md).
  * Every test prints what it measured (print_message). */
 #include "../unit/pg_test.h"
+#define HARD_PROGRAM "test_bounce_energy"
+#include "hard_results.h"
 
 #include <math.h>
 

@@ -5,6 +5,8 @@
  *
  * Every test prints what it measured (print_message). */
 #include "../unit/pg_test.h"
+#define HARD_PROGRAM "test_envelope_shapes"
+#include "hard_results.h"
 
 #include <math.h>
 #include <string.h>

@@ -9,7 +9,9 @@
  * PG_HARD_LONG_RUN_STEPS overrides the length of the one-hour run (216 000 steps).
  *
  * Every test prints what it measured (print_message), so a regression shows before it
- * fails. Nothing here loosens a bound to pass: a failing case is a finding.
+ * fails, and every figure checked against a bound goes to the suite's results file
+ * (hard_results.h, docs/results/hard_cases.tsv). Nothing here loosens a bound to pass:
+ * a failing case is a finding.
  */
 #include "../unit/pg_test.h"
 
@@ -25,6 +27,12 @@
 #ifndef PG_HARD_GROUP
 #define PG_HARD_GROUP 1
 #endif
+#if PG_HARD_GROUP == 1
+#define HARD_PROGRAM "test_hard_cases"
+#else
+#define HARD_PROGRAM "test_hard_cases_slow"
+#endif
+#include "hard_results.h"
 #ifndef PG_HARD_LONG_RUN_STEPS
 #define PG_HARD_LONG_RUN_STEPS 216000
 #endif
@@ -84,9 +92,12 @@ PG_HARD_HELPER double speed(const pg_world *w, pg_body_id b)
 
 PG_HARD_HELPER double dist(pg_vec2 a, pg_vec2 b) { return hypot(fd(a.x) - fd(b.x), fd(a.y) - fd(b.y)); }
 
-/* Fail with a message when !(got <= bound); print the measured value either way. */
-PG_HARD_HELPER int within(double got, double bound, const char *what)
+/* 0 and a message when !(got <= bound); the figure goes to the results file either way
+ * (hard_results.h), named by `what` and the calling function. */
+#define within(got, bound, what) within_at(__func__, got, bound, what)
+PG_HARD_HELPER int within_at(const char *function, double got, double bound, const char *what)
 {
+    hard_figure(function, what, got, bound);
     if (!(got <= bound)) {
         print_error("%s: %.6g exceeds the bound %.6g\n", what, got, bound);
         return 0;
@@ -220,13 +231,16 @@ static void test_leaning_column(void **state)
     (void)state;
     tilt = leaning_column(12, 4, 30.0, 60.0, &fell);
     print_message("leaning column, 12 boxes, defaults (4 substeps, 30 Hz): top tilt after 60 s %.3f deg%s\n", tilt, fell > 0 ? " (fell)" : "");
+    hard_figure(__func__, "12 boxes, defaults: top tilt after 60 s (deg)", fell > 0 ? 90.0 : tilt, 1.0);
     if (!(tilt < 1.0 && fell == 0.0)) ok = 0;
     tilt = leaning_column(30, 8, 120.0, 60.0, &fell);
     print_message("leaning column, 30 boxes, 8 substeps at 120 Hz: top tilt after 60 s %.3f deg%s\n", tilt, fell > 0 ? " (fell)" : "");
+    hard_figure(__func__, "30 boxes, 8 substeps at 120 Hz: top tilt after 60 s (deg)", fell > 0 ? 90.0 : tilt, 1.0);
     if (!(tilt < 1.0 && fell == 0.0)) ok = 0;
     tilt = leaning_column(14, 4, 30.0, 60.0, &fell);
     print_message("leaning column, 14 boxes, defaults: %s (the open finding; not asserted)\n", fell > 0 ? "toppled" : "stood");
     if (fell > 0) print_message("  it toppled at %.1f s\n", fell);
+    hard_figure(__func__, "14 boxes, defaults: time it topples at, 0 if it stands (s)", fell > 0 ? fell : 0.0, HARD_NOT_ASSERTED);
     if (!ok) fail_msg("%s", "a leaning column that must stand fell or tilted 1 degree or more");
 }
 
@@ -531,6 +545,9 @@ static void test_pinched_body_is_not_pressed_through(void **state)
                     }
         print_message("pinch (%s): %d cases, the light box pressed into the face by %.3f of its half size at worst\n",
                       wall ? "wall, no gravity" : "ground", runs, worst);
+        hard_figure(__func__, wall ? "135 pinches against a wall, no gravity: deepest light box (half sizes into the face)"
+                                   : "135 pinches on the ground: deepest light box (half sizes into the face)",
+                    worst, 1.0);
         assert_int_equal(runs, 135);
     }
     if (!ok) fail();
@@ -604,6 +621,12 @@ static void expect_bullet_stopped(int dynamic_target, double height, double angl
                       "(final %.4f), target speed %.4f m/s, ball vx %.3f m/s\n",
                       angle, dynamic_target ? "dynamic plank" : "static wall", height, bullet_starts[k], r.max_local_x,
                       r.final_local_x, r.target_speed, r.ball_vx_end);
+        {
+            char what[160];
+            snprintf(what, sizeof what, "bullet at %g deg vs %s %g m tall, from x = %.2f: deepest centre x in the target's frame (m)",
+                     angle, dynamic_target ? "dynamic plank" : "static wall", height, bullet_starts[k]);
+            hard_figure("expect_bullet_stopped", what, r.max_local_x, 0.0);
+        }
         if (!(r.max_local_x < 0.0)) {
             print_error("with CONTINUOUS the bullet from x = %.2f reached x = %.4f in the %s's frame: it passed its centre line\n",
                         bullet_starts[k], r.max_local_x, dynamic_target ? "plank" : "wall");
@@ -755,6 +778,10 @@ static void test_spinning_box_meets_a_thin_wall(void **state)
     print_message("spinning boxes against a 0.1 m wall: %d of %d passed, %d paused, deepest corner %.3f box sizes past the face "
                   "(bound %.3f); without CONTINUOUS %d of %d passed\n",
                   g.through, g.throws, g.paused, g.worst_depth, bound, g.control_through, g.throws / 5);
+    hard_figure(__func__, "420 spinning boxes: throws that passed the wall", g.through, 0.0);
+    hard_figure(__func__, "420 spinning boxes: throws that paused", g.paused, 0.0);
+    hard_figure(__func__, "420 spinning boxes: deepest corner past the near face (box sizes)", g.worst_depth, bound);
+    hard_figure(__func__, "84 spinning boxes without CONTINUOUS (the control): throws that passed", g.control_through, HARD_NOT_ASSERTED);
     ok = g.failed == 0;
     if (g.control_through == 0) {
         print_error("control: without CONTINUOUS no box passed the wall: the setup cannot show tunnelling\n");
@@ -783,6 +810,11 @@ static void test_spinning_shapes_meet_a_thin_wall(void **state)
     for (q = 0; q < sizeof kinds / sizeof kinds[0]; ++q) {
         spin_grid g = throw_spin_grid(kinds[q], names[q], sizes, 0.0, 0);
         print_message("spinning %ss against a 0.1 m wall: %d of %d passed, %d paused\n", names[q], g.through, g.throws, g.paused);
+        {
+            char what[96];
+            snprintf(what, sizeof what, "%d spinning %ss: throws that passed the wall or paused", g.throws, names[q]);
+            hard_figure(__func__, what, g.through + g.paused, 0.0);
+        }
         failed += g.failed;
     }
     if (failed != 0) fail();
@@ -1921,6 +1953,8 @@ static void test_long_run_one_hour(void **state)
                   (unsigned long long)(step - 1), (double)(step - 1) / 3600.0, (unsigned)hash_checks, (unsigned)st.body_count,
                   (unsigned)st.shape_count, (unsigned)st.contact_count, (unsigned)st.awake_body_count, (unsigned)max_awake,
                   (unsigned)st.capacity_misses, (unsigned)st.speed_clamps, max_speed, (unsigned long long)pg_world_hash(a.w), secs);
+    hard_figure(__func__, "capacity misses and speed clamps in the hour", (double)(st.capacity_misses + st.speed_clamps), 0.0);
+    hard_figure(__func__, "fastest sampled speed (m/s)", max_speed, HARD_NOT_ASSERTED);
     assert_int_equal(pg_world_frame(a.w), PG_HARD_LONG_RUN_STEPS);
     assert_int_equal(st.capacity_misses, 0);
     assert_int_equal(st.speed_clamps, 0);

@@ -10,6 +10,8 @@
  * with sleeping off creep and one of the four falls (the open finding): printed, not
  * asserted. Every run prints what it measured (print_message). */
 #include "../unit/pg_test.h"
+#define HARD_PROGRAM "test_house_of_cards"
+#include "hard_results.h"
 
 #include <math.h>
 

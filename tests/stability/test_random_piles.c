@@ -42,6 +42,8 @@
  * 200 rad/s inside a closed box of 0.1 m thick static walls, where sweeping fast-turning
  * bodies must neither add energy nor pause a body (details above that test). */
 #include "../unit/pg_test.h"
+#define HARD_PROGRAM "test_random_piles"
+#include "hard_results.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -177,6 +179,8 @@ static pile_result run_pile(uint32_t seed, int bouncy)
 static void test_random_piles(void **state)
 {
     int k, asleep = 0, ok = 1;
+    double widest = 0.0, deepest = -1e9, deepest_end = -1e9, rise = -1e9;
+    unsigned clamps = 0;
     (void)state;
     for (k = 0; k < PILES; ++k) {
         pile_result r = run_pile(0x9E3779B9u ^ (uint32_t)(k * 7919 + 1), 0);
@@ -185,6 +189,11 @@ static void test_random_piles(void **state)
                       k, r.worst_x, r.lowest_y, r.lowest_end, r.energy0, 100.0 * r.energy_rise / r.energy0, SECONDS,
                       r.awake_at_end, r.speed_clamps, r.capacity_misses);
         if (r.awake_at_end == 0) ++asleep;
+        if (r.worst_x > widest) widest = r.worst_x;
+        if (-r.lowest_y > deepest) deepest = -r.lowest_y;
+        if (-r.lowest_end > deepest_end) deepest_end = -r.lowest_end;
+        if (100.0 * r.energy_rise / r.energy0 > rise) rise = 100.0 * r.energy_rise / r.energy0;
+        clamps += r.speed_clamps + r.capacity_misses;
         if (!(r.worst_x < 14.5 && r.lowest_y > -0.5 && r.lowest_end > 0.0)) {
             print_error("pile %d: a body passed a wall or the ground (widest |x| %.4f m, lowest y %.4f m, %.4f m at the end)\n", k,
                         r.worst_x, r.lowest_y, r.lowest_end);
@@ -200,6 +209,12 @@ static void test_random_piles(void **state)
         }
     }
     print_message("%d of %d piles asleep after %d s\n", asleep, PILES, SECONDS);
+    hard_figure(__func__, "100 piles: widest |x| of a body, walls at 15 m (m)", widest, 14.5);
+    hard_figure(__func__, "100 piles: deepest centre below the ground (m)", deepest, 0.5);
+    hard_figure(__func__, "100 piles: deepest centre below the ground at the end (m)", deepest_end, 0.0);
+    hard_figure(__func__, "100 piles: largest energy rise above the start (%)", rise, 0.1);
+    hard_figure(__func__, "100 piles: speed clamps and capacity misses", clamps, 0.0);
+    hard_figure(__func__, "100 piles: piles still awake after 20 s", PILES - asleep, PILES - 75);
     if (asleep < 75) {
         print_error("only %d of %d piles are asleep after %d s (at least 75)\n", asleep, PILES, SECONDS);
         ok = 0;
@@ -210,17 +225,20 @@ static void test_random_piles(void **state)
 static void test_bouncy_piles(void **state)
 {
     int k, ok = 1;
+    double rise = -1e9;
     (void)state;
     for (k = 0; k < BOUNCY_PILES; ++k) {
         pile_result r = run_pile(0x9E3779B9u ^ (uint32_t)(k * 7919 + 1), 1);
         print_message("bouncy pile %2d: energy %.1f J at the start, largest rise %+.4f %%\n", k, r.energy0,
                       100.0 * r.energy_rise / r.energy0);
+        if (100.0 * r.energy_rise / r.energy0 > rise) rise = 100.0 * r.energy_rise / r.energy0;
         if (!(r.energy_rise <= 0.001 * r.energy0)) {
             print_error("bouncy pile %d: the energy rose %.3f J (%.4f %%) above its start\n", k, r.energy_rise,
                         100.0 * r.energy_rise / r.energy0);
             ok = 0;
         }
     }
+    hard_figure(__func__, "40 piles with restitution 1: largest energy rise above the start (%)", rise, 0.1);
     if (!ok) fail();
 }
 
@@ -244,7 +262,9 @@ static void test_bouncy_piles(void **state)
 
 static void test_thrown_spinning_piles(void **state)
 {
-    int k, ok = 1;
+    int k, ok = 1, all_out = 0, all_paused = 0;
+    double worst_rise = -1e9;
+    unsigned clamps = 0;
     (void)state;
     for (k = 0; k < THROWN_PILES; ++k) {
         pg_world_def d = pg_default_world_def();
@@ -297,6 +317,10 @@ static void test_thrown_spinning_piles(void **state)
                       "%+.4f %%, clamps %u, capacity misses %u\n",
                       k, out, strayed, paused, 100.0 * rise / e0, pg_world_get_stats(t.w).speed_clamps,
                       pg_world_get_stats(t.w).capacity_misses);
+        all_out += out;
+        all_paused += paused;
+        if (100.0 * rise / e0 > worst_rise) worst_rise = 100.0 * rise / e0;
+        clamps += pg_world_get_stats(t.w).speed_clamps + pg_world_get_stats(t.w).capacity_misses;
         if (paused != 0 || !(rise <= 0.001 * e0) || pg_world_get_stats(t.w).speed_clamps != 0 ||
             pg_world_get_stats(t.w).capacity_misses != 0) {
             print_error("thrown pile %d: %d pauses, energy rise %.4f %%, %u clamps, %u capacity misses\n", k, paused, 100.0 * rise / e0,
@@ -305,6 +329,10 @@ static void test_thrown_spinning_piles(void **state)
         }
         free_world(&t);
     }
+    hard_figure(__func__, "20 thrown piles: largest energy rise above the start (%)", worst_rise, 0.1);
+    hard_figure(__func__, "20 thrown piles: pauses", all_paused, 0.0);
+    hard_figure(__func__, "20 thrown piles: speed clamps and capacity misses", clamps, 0.0);
+    hard_figure(__func__, "20 thrown piles: bodies outside the box after 10 s (of 1200)", all_out, HARD_NOT_ASSERTED);
     if (!ok) fail();
 }
 

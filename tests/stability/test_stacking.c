@@ -28,6 +28,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#define HARD_PROGRAM "test_stacking"
+#include "hard_results.h"
+
 #include "pogon/pogon.h"
 #include "scenes.h"
 
@@ -93,6 +96,11 @@ static void run_pyramid(uint32_t effects)
     dy = fd(pg_body_position(b.scene.world, b.scene.top).y) - fd(b.scene.top_start.y);
     dist = sqrt(dx * dx + dy * dy);
     print_message("pyramid 20 (effects 0x%02x): top box moved %.5f m (dx %.5f, dy %.5f) in 600 steps\n", effects, dist, dx, dy);
+    {
+        char what[96];
+        snprintf(what, sizeof what, "pyramid 20 (effects 0x%02x): top box moved in 600 steps (m)", effects);
+        hard_figure(__func__, what, dist, 0.1);
+    }
     if (!(dist < 0.1)) {
         print_error("pyramid 20: the top box moved %.4f m (bound 0.1 m)\n", dist);
         fail();
@@ -130,6 +138,15 @@ static void run_stack(uint32_t effects)
     print_message("stack 20 (effects 0x%02x): max |x| %.6f m (box %u, step %d), max tilt %.5f deg, "
                   "max kinetic energy over steps 600..3600 %.3e J (step %d)\n",
                   effects, max_x, (unsigned)worst_body, worst_step, max_tilt, max_ke, ke_step);
+    {
+        char what[96];
+        snprintf(what, sizeof what, "stack 20 (effects 0x%02x): largest |x| of a box (m)", effects);
+        hard_figure(__func__, what, max_x, 0.1);
+        snprintf(what, sizeof what, "stack 20 (effects 0x%02x): largest tilt of a box (deg)", effects);
+        hard_figure(__func__, what, max_tilt, 5.0);
+        snprintf(what, sizeof what, "stack 20 (effects 0x%02x): kinetic energy, steps 600..3600 (J)", effects);
+        hard_figure(__func__, what, max_ke, KE_BOUND);
+    }
     if (!(max_x < 0.1)) {
         print_error("stack 20: box %u reached |x| = %.4f m at step %d (bound 0.1 m): it toppled\n", (unsigned)worst_body, max_x, worst_step);
         fail();
@@ -170,6 +187,11 @@ static void run_stack(uint32_t effects)
         double want = 380.0 * g / (w30 * w30) + 20.0 * g / (w60 * w60);
         double sink = 19.5 - fd(pg_body_position(b.scene.world, b.scene.top).y);
         print_message("stack 20: the top box sank %.5f m (soft-contact model %.5f m)\n", sink, want);
+        {
+            char what[96];
+            snprintf(what, sizeof what, "stack 20 (effects 0x%02x): |sink - soft-contact model| (m)", effects);
+            hard_figure(__func__, what, fabs(sink - want), 0.05 * want);
+        }
         if (!(fabs(sink - want) <= 0.05 * want)) {
             print_error("stack 20: the top box sank %.5f m, the soft contacts' model says %.5f m (bound 5 %%)\n", sink, want);
             fail();

@@ -252,7 +252,8 @@ static void failures_change_nothing(void **state)
     free_world(&t);
 }
 
-/* A format 1 file (no joint commands) is refused with a message naming the upgrade. */
+/* A format 2 file (before the joint commands) is refused with a message naming the
+ * upgrade, and pg_replay_upgrade gives back the format 3 file byte for byte. */
 static void old_replay_refused(void **state)
 {
     static const char scene[] = "pogon-scene 1\nball 0.5 position 0 2\n";
@@ -261,28 +262,38 @@ static void old_replay_refused(void **state)
     pg_replay_writer w;
     pg_replay_info info;
     pg_replay_error e;
-    uint8_t *buf = malloc(4096);
-    size_t size = 0;
+    uint8_t *buf = malloc(4096), *v2 = malloc(4096), *out = malloc(4096);
+    size_t size = 0, need = 0;
     uint64_t hash;
     int i;
     (void)state;
     assert_non_null(buf);
+    assert_non_null(v2);
+    assert_non_null(out);
     d.max_bodies = d.max_shapes = 1;
     t = make_world_def(&d);
     assert_int_equal(pg_replay_writer_begin(&w, buf, 4096, scene, sizeof scene - 1, 10), PG_OK);
     assert_int_equal(pg_replay_writer_add_checkpoint_world(&w, t.w), PG_OK);
     assert_int_equal(pg_replay_writer_finish(&w, pg_world_hash(t.w), &size), PG_OK);
-    buf[8] = 1; /* version 1, with the header hash and checksum it would have had */
-    buf[9] = 0;
-    hash = pg_hash_bytes(PG_HASH_SEED, buf, 32);
-    for (i = 0; i < 8; ++i) buf[32 + i] = (uint8_t)(hash >> (8 * i));
-    hash = pg_hash_bytes(PG_HASH_SEED, buf, size - 8);
-    for (i = 0; i < 8; ++i) buf[size - 8 + (size_t)i] = (uint8_t)(hash >> (8 * i));
-    assert_int_equal(pg_replay_read(buf, size, &info, &e), PG_ERR_INVALID_ARGUMENT);
+    assert_int_equal(buf[8], 3);
+    memcpy(v2, buf, size);
+    v2[8] = 2; /* version 2, with the header hash and checksum it would have had */
+    hash = pg_hash_bytes(PG_HASH_SEED, v2, 36);
+    for (i = 0; i < 8; ++i) v2[36 + i] = (uint8_t)(hash >> (8 * i));
+    hash = pg_hash_bytes(PG_HASH_SEED, v2, size - 8);
+    for (i = 0; i < 8; ++i) v2[size - 8 + (size_t)i] = (uint8_t)(hash >> (8 * i));
+    assert_int_equal(pg_replay_read(v2, size, &info, &e), PG_ERR_INCOMPATIBLE);
     assert_int_equal(e.offset, 8);
-    assert_non_null(strstr(e.message, "format version 1 is older than this build's 3"));
+    assert_non_null(strstr(e.message, "format version 2 is older than this build's 3"));
     assert_non_null(strstr(e.message, "pogon-replay upgrade"));
+    assert_int_equal(pg_replay_upgrade(v2, size, pg_numeric_config(), out, 4096, &need, &e), PG_OK);
+    assert_int_equal(need, size);
+    assert_memory_equal(out, buf, size);
+    v2[size / 2] ^= 1; /* a damaged format 2 file is not sealed into a format 3 one */
+    assert_int_equal(pg_replay_upgrade(v2, size, pg_numeric_config(), out, 4096, &need, &e), PG_ERR_INVALID_ARGUMENT);
     free(buf);
+    free(v2);
+    free(out);
     free_world(&t);
 }
 

@@ -142,6 +142,8 @@ static void test_write_read_play(void **state)
     assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
     assert_int_equal(info.format_version, PG_REPLAY_FORMAT_VERSION);
     assert_int_equal(info.engine_major, POGON_VERSION_MAJOR);
+    assert_int_equal(info.numeric_config, pg_numeric_config());
+    assert_int_equal(info.numeric_config & PG_NUMCFG_TRIG_BITS_MASK, PG_TRIG_TABLE_BITS);
     assert_int_equal(info.checkpoint_interval, 10);
     assert_int_equal(info.section_count, PG_SECTION_COUNT);
     assert_int_equal(info.frame_count, 125);
@@ -332,6 +334,116 @@ static void test_changed_command_diverges(void **state)
     assert_int_equal(fr.frame, target);
     assert_true(fr.section_mismatch & (1u << PG_SECTION_BODIES));
     free(memory);
+    free(file);
+}
+
+/* ---- numeric configuration and format versions ---------------------------------------- */
+static void put_le(uint8_t *p, uint64_t v, int bytes)
+{
+    int k;
+    for (k = 0; k < bytes; ++k) p[k] = (uint8_t)(v >> (8 * k));
+}
+
+/* Seal a header edited by a test: its hash (over the bytes before it) and the file checksum. */
+static void reseal(uint8_t *file, size_t size, size_t header_hash_at)
+{
+    put_le(file + header_hash_at, pg_hash_bytes(PG_HASH_SEED, file, header_hash_at), 8);
+    put_le(file + size - 8, pg_hash_bytes(PG_HASH_SEED, file, size - 8), 8);
+}
+
+/* Another sine table (the other end of 8..12 from this build's) in a sound file: the
+ * reader fills *info but refuses it as incompatible, naming both tables; the player
+ * refuses it too. */
+static void test_other_numeric_config_is_refused(void **state)
+{
+    size_t size, mem, n;
+    uint64_t h;
+    uint8_t *file = record(30, 10, 1 << 16, &size, &h);
+    uint32_t other = PG_TRIG_TABLE_BITS == 12 ? 8u : 12u;
+    pg_replay_info info;
+    pg_replay_error err;
+    pg_replay_player p;
+    char want[200], mine[64], theirs[64];
+    void *memory;
+    (void)state;
+    put_le(file + 20, other, 4);
+    reseal(file, size, 36);
+    assert_int_equal(pg_replay_read(file, size, &info, &err), PG_ERR_INCOMPATIBLE);
+    assert_string_equal(err.region, "header");
+    assert_string_equal(err.field, "numeric_config");
+    assert_int_equal(err.offset, 20);
+    n = pg_numeric_config_describe(other, theirs, sizeof theirs);
+    assert_int_equal(n, strlen(theirs));
+    assert_int_equal(pg_numeric_config_describe(other, theirs, 4), n); /* cut, but the whole length */
+    assert_int_equal(strlen(theirs), 3);
+    pg_numeric_config_describe(other, theirs, sizeof theirs);
+    pg_numeric_config_describe(pg_numeric_config(), mine, sizeof mine);
+    assert_string_equal(theirs, other == 8u ? "an 8-bit sine table" : "a 12-bit sine table");
+    snprintf(want, sizeof want, "recorded with %s; this build has %s", theirs, mine);
+    if (strstr(err.message, want) == NULL) fail_msg("message '%s' lacks '%s'", err.message, want);
+    /* the file is sound: what it holds is reported */
+    assert_int_equal(info.numeric_config, other);
+    assert_int_equal(info.frame_count, 30);
+    assert_int_equal(info.final_hash, h);
+    assert_int_equal(pg_replay_world_memory_size(&info, &mem, &err), PG_OK);
+    memory = malloc(mem);
+    assert_int_equal(pg_replay_player_begin(&p, file, &info, memory, mem, NULL, &err), PG_ERR_INCOMPATIBLE);
+    assert_string_equal(err.field, "numeric_config");
+    free(memory);
+    free(file);
+}
+
+/* A format 1 file (the format 2 file without numeric_config) is refused with the way to
+ * upgrade it; pg_replay_upgrade gives back the format 2 file byte for byte; a damaged
+ * format 1 file is not upgraded; a newer version is refused as such. */
+static void test_format_1_upgrades(void **state)
+{
+    size_t size, v1_size, need = 0, i;
+    uint64_t h;
+    uint8_t *file = record(30, 10, 1 << 16, &size, &h);
+    uint8_t *v1, *out;
+    pg_replay_info info;
+    pg_replay_error err;
+    (void)state;
+    v1_size = size - 4;
+    v1 = malloc(v1_size);
+    memcpy(v1, file, 20);
+    memcpy(v1 + 20, file + 24, size - 24);
+    put_le(v1 + 8, 1, 2);
+    reseal(v1, v1_size, 32);
+    assert_int_equal(pg_replay_read(v1, v1_size, &info, &err), PG_ERR_INCOMPATIBLE);
+    assert_int_equal(info.format_version, 1);
+    assert_string_equal(err.field, "format_version");
+    if (strstr(err.message, "pogon-replay upgrade IN OUT") == NULL) fail_msg("message: %s", err.message);
+
+    out = malloc(size);
+    assert_int_equal(pg_replay_upgrade(v1, v1_size, pg_numeric_config(), out, size - 1, &need, &err), PG_ERR_MEMORY);
+    assert_int_equal(need, size);
+    assert_int_equal(pg_replay_upgrade(v1, v1_size, pg_numeric_config(), out, size, &need, &err), PG_OK);
+    assert_int_equal(need, size);
+    assert_memory_equal(out, file, size);
+    /* the current format is copied as it is */
+    memset(out, 0, size);
+    assert_int_equal(pg_replay_upgrade(file, size, pg_numeric_config(), out, size, &need, &err), PG_OK);
+    assert_memory_equal(out, file, size);
+
+    /* any damaged byte of the old file is refused, never sealed into a new one */
+    for (i = 0; i < v1_size; i += 7) {
+        if (i == 8 || i == 9) continue; /* the version itself: refused as another version */
+        v1[i] ^= 0x10;
+        if (pg_replay_upgrade(v1, v1_size, pg_numeric_config(), out, size, &need, &err) == PG_OK)
+            fail_msg("damage at byte %zu was upgraded", i);
+        assert_true(err.offset < v1_size);
+        v1[i] ^= 0x10;
+    }
+    /* a newer format is not for this build */
+    put_le(v1 + 8, PG_REPLAY_FORMAT_VERSION + 1, 2);
+    reseal(v1, v1_size, 32);
+    assert_int_equal(pg_replay_read(v1, v1_size, &info, &err), PG_ERR_INCOMPATIBLE);
+    if (strstr(err.message, "is newer than this build's") == NULL) fail_msg("message: %s", err.message);
+    assert_int_equal(pg_replay_upgrade(v1, v1_size, pg_numeric_config(), out, size, &need, &err), PG_ERR_INCOMPATIBLE);
+    free(out);
+    free(v1);
     free(file);
 }
 
@@ -577,6 +689,8 @@ int main(void)
         cmocka_unit_test(test_every_bit_flip),
         cmocka_unit_test(test_truncation),
         cmocka_unit_test(test_changed_command_diverges),
+        cmocka_unit_test(test_other_numeric_config_is_refused),
+        cmocka_unit_test(test_format_1_upgrades),
         cmocka_unit_test(test_snapshot_round_trip_10000),
         cmocka_unit_test(test_apply_frame_offsets),
         cmocka_unit_test(test_apply_frame_every_offset),

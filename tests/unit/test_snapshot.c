@@ -77,6 +77,12 @@ static void free_snapshot(snapshot *s) { t_free(s->bytes); s->bytes = NULL; s->s
 
 static void section_ranges(const snapshot *s, size_t start[PG_SECTION_COUNT], size_t length[PG_SECTION_COUNT]);
 static int reseal(uint8_t *bytes, size_t size);
+static uint32_t get32(const uint8_t *p);
+static void put32(uint8_t *p, uint32_t v);
+
+/* The snapshot header (src/state.c): "PGSN", u16 format version, u16 engine major,
+ * minor, patch, u32 numeric configuration, three u32 capacities. */
+#define HEADER_SIZE 28u
 
 static int same_snapshot(const snapshot *a, const snapshot *b) { return a->size == b->size && memcmp(a->bytes, b->bytes, a->size) == 0; }
 
@@ -405,7 +411,7 @@ static void test_save_errors(void **state)
     uint64_t h = pg_world_hash(m.t.w);
     (void)state;
     assert_non_null(buf);
-    assert_true(need > 18);
+    assert_true(need > HEADER_SIZE);
     memset(buf, 0xAB, need + 8u);
     assert_int_equal(pg_world_snapshot_save(m.t.w, buf, need - 1u, &written), PG_ERR_MEMORY);
     PG_EXPECT_EQ(written, 0, "%s", "nothing written on failure");
@@ -468,7 +474,7 @@ static void check_resave(pg_world *w, const uint8_t *bytes, size_t size, long lo
     given.size = size;
     section_ranges(&again, sa, la);
     section_ranges(&given, sg, lg);
-    if (memcmp(again.bytes, bytes, 18) != 0) same = 0;
+    if (memcmp(again.bytes, bytes, HEADER_SIZE) != 0) same = 0;
     for (k = 0; k < PG_SECTION_COUNT; ++k)
         if (k != PG_SECTION_BROADPHASE && (la[k] != lg[k] || memcmp(again.bytes + sa[k], bytes + sg[k], la[k]) != 0)) same = 0;
     if (!same) {
@@ -504,8 +510,15 @@ static void test_corrupt_every_byte(void **state)
             pg_result r;
             memcpy(copy, s.bytes, s.size);
             copy[i] ^= patterns[p];
-            /* as damaged: the checksum refuses every change of one byte */
+            /* as damaged: the checksum refuses every change of one byte, but for the format
+             * version, read before it (test_damage_is_located_and_versions_named) */
             r = pg_world_snapshot_restore(dst.t.w, copy, s.size);
+            if (i == 4 || i == 5) {
+                assert_int_equal(r, PG_ERR_INCOMPATIBLE);
+                assert_true(pg_world_hash(dst.t.w) == h_dst);
+                ++damaged_refused;
+                continue;
+            }
             if (r != PG_ERR_INVALID_ARGUMENT || strstr(pg_world_last_error(dst.t.w), "offset") == NULL)
                 fail_msg("byte %d xor 0x%02x: restore returned %s (%s)", (int)i, patterns[p], pg_result_name(r), pg_world_last_error(dst.t.w));
             if (pg_world_hash(dst.t.w) != h_dst) fail_msg("byte %d xor 0x%02x: a refused snapshot changed the world", (int)i, patterns[p]);
@@ -519,6 +532,13 @@ static void test_corrupt_every_byte(void **state)
                 check_resave(dst.t.w, copy, s.size, (long long)i, patterns[p], &resave_mismatches);
                 assert_int_equal(pg_world_snapshot_restore(dst.t.w, dst_original.bytes, dst_original.size), PG_OK);
                 assert_true(pg_world_hash(dst.t.w) == h_dst);
+            } else if (i >= 6 && i < 16 && r == PG_ERR_INCOMPATIBLE) {
+                /* the engine's major or minor version or the numeric configuration, resealed:
+                 * a snapshot of other numerics, named as one */
+                ++refused;
+                if (strstr(pg_world_last_error(dst.t.w), "snapshot of pogon ") == NULL)
+                    fail_msg("byte %d xor 0x%02x: last error \"%s\"", (int)i, patterns[p], pg_world_last_error(dst.t.w));
+                if (pg_world_hash(dst.t.w) != h_dst) fail_msg("byte %d xor 0x%02x: a refused snapshot changed the world", (int)i, patterns[p]);
             } else {
                 ++refused;
                 if (r != PG_ERR_INVALID_ARGUMENT) fail_msg("byte %d xor 0x%02x: restore returned %s", (int)i, patterns[p], pg_result_name(r));
@@ -532,10 +552,19 @@ static void test_corrupt_every_byte(void **state)
                   "structure, %u accepted (%u re-save differently)\n",
                   (int)s.size, damaged_refused, refused, accepted, resave_mismatches);
     PG_EXPECT_EQ(damaged_refused, s.size * sizeof patterns, "%s", "every changed byte is refused");
-    /* the header is never accepted corrupted: magic, version, capacities */
-    for (i = 0; i < 18; ++i) {
+    /* the header is never accepted corrupted: magic, version, engine version, numeric
+     * configuration, capacities. A changed format version reads as another version
+     * (PG_ERR_INCOMPATIBLE, with its offset): it is read before the checksum, whose place
+     * depends on it. */
+    for (i = 0; i < HEADER_SIZE; ++i) {
         memcpy(copy, s.bytes, s.size);
         copy[i] ^= 0x04;
+        if (i == 4 || i == 5) {
+            assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INCOMPATIBLE);
+            assert_non_null(strstr(pg_world_last_error(dst.t.w), "at offset 4"));
+            assert_true(pg_world_hash(dst.t.w) == h_dst);
+            continue;
+        }
         expect_refused(dst.t.w, copy, s.size, h_dst, "header byte", (long long)i);
     }
     t_free(copy);
@@ -573,10 +602,61 @@ static void test_damage_is_located_and_versions_named(void **state)
     memcpy(copy, s.bytes, s.size);
     copy[4] = 3;
     assert_true(reseal(copy, s.size));
-    assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INVALID_ARGUMENT);
+    assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INCOMPATIBLE);
     assert_string_equal(pg_world_last_error(dst.t.w),
-                        "PG_ERR_INVALID_ARGUMENT: snapshot format version 3 at offset 4; this build reads version 5 only (save it again with this build)");
+                        "PG_ERR_INCOMPATIBLE: snapshot format version 3 at offset 4; this build reads version 6 only (save it again with this build)");
     assert_true(pg_world_hash(dst.t.w) == h);
+    t_free(copy);
+    free_snapshot(&s);
+    free_world(&src.t);
+    free_world(&dst.t);
+}
+
+/* A sound snapshot of other numerics (another sine table, or another major.minor
+ * version) is refused with a message naming both, and changes nothing; another patch
+ * version (which never changes a bit, version.h) is accepted. */
+static void test_other_numerics_refused(void **state)
+{
+    mixed src = make_mixed(30), dst = make_mixed(60);
+    snapshot s = save(src.t.w);
+    uint64_t h = pg_world_hash(dst.t.w);
+    uint8_t *copy = (uint8_t *)t_malloc(s.size);
+    uint32_t other = PG_TRIG_TABLE_BITS == 12 ? 8u : 12u;
+    char want[320], mine[64], theirs[64];
+    (void)state;
+    assert_non_null(copy);
+    /* the header as saved */
+    assert_int_equal(s.bytes[4] | s.bytes[5] << 8, 6);
+    assert_int_equal(s.bytes[6] | s.bytes[7] << 8, POGON_VERSION_MAJOR);
+    assert_int_equal(s.bytes[8] | s.bytes[9] << 8, POGON_VERSION_MINOR);
+    assert_int_equal(s.bytes[10] | s.bytes[11] << 8, POGON_VERSION_PATCH);
+    assert_int_equal(get32(s.bytes + 12), pg_numeric_config());
+    /* another sine table */
+    memcpy(copy, s.bytes, s.size);
+    put32(copy + 12, other);
+    assert_true(reseal(copy, s.size));
+    assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INCOMPATIBLE);
+    pg_numeric_config_describe(other, theirs, sizeof theirs);
+    pg_numeric_config_describe(pg_numeric_config(), mine, sizeof mine);
+    snprintf(want, sizeof want, "PG_ERR_INCOMPATIBLE: snapshot of pogon %s, %s; this is %s, %s: other numerics",
+             POGON_VERSION_STRING, theirs, POGON_VERSION_STRING, mine);
+    assert_string_equal(pg_world_last_error(dst.t.w), want);
+    assert_true(pg_world_hash(dst.t.w) == h);
+    /* another minor version: other numerics too */
+    memcpy(copy, s.bytes, s.size);
+    copy[8] = (uint8_t)(POGON_VERSION_MINOR + 1);
+    assert_true(reseal(copy, s.size));
+    assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INCOMPATIBLE);
+    snprintf(want, sizeof want, "snapshot of pogon %d.%d.%d, %s; this is %s", POGON_VERSION_MAJOR,
+             POGON_VERSION_MINOR + 1, POGON_VERSION_PATCH, mine, POGON_VERSION_STRING);
+    if (strstr(pg_world_last_error(dst.t.w), want) == NULL) fail_msg("\"%s\" does not say \"%s\"", pg_world_last_error(dst.t.w), want);
+    assert_true(pg_world_hash(dst.t.w) == h);
+    /* another patch version restores */
+    memcpy(copy, s.bytes, s.size);
+    copy[10] = (uint8_t)(POGON_VERSION_PATCH + 1);
+    assert_true(reseal(copy, s.size));
+    assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_OK);
+    assert_true(pg_world_hash(dst.t.w) == pg_world_hash(src.t.w));
     t_free(copy);
     free_snapshot(&s);
     free_world(&src.t);
@@ -692,7 +772,7 @@ static void le64(uint8_t *p, uint64_t v)
  * behind the checksum. Returns 0 (and changes nothing) when the framing is broken. */
 static int reseal(uint8_t *bytes, size_t size)
 {
-    size_t pos = 18, at[PG_SECTION_COUNT], len[PG_SECTION_COUNT];
+    size_t pos = HEADER_SIZE, at[PG_SECTION_COUNT], len[PG_SECTION_COUNT];
     int k;
     for (k = 0; k < PG_SECTION_COUNT; ++k) {
         if (size < pos + 5 || bytes[pos] != (uint8_t)k) return 0;
@@ -1063,12 +1143,12 @@ static void expect_sections(const uint64_t before[PG_SECTION_COUNT], const uint6
     }
 }
 
-/* Section byte ranges: "PGSN" u16 version, 3 x u32 capacities, then per section
+/* Section byte ranges: the header (HEADER_SIZE bytes), then per section
  * u8 id, u32 length, bytes, u64 hash, then the u64 checksum (the framing documented in
  * src/state.c). */
 static void section_ranges(const snapshot *s, size_t start[PG_SECTION_COUNT], size_t length[PG_SECTION_COUNT])
 {
-    size_t pos = 18;
+    size_t pos = HEADER_SIZE;
     int k;
     assert_true(s->size >= pos);
     assert_memory_equal(s->bytes, "PGSN", 4);
@@ -1330,6 +1410,7 @@ int main(void)
         cmocka_unit_test_teardown(test_capacity_mismatch, free_leftovers),
         cmocka_unit_test_teardown(test_corrupt_every_byte, free_leftovers),
         cmocka_unit_test_teardown(test_damage_is_located_and_versions_named, free_leftovers),
+        cmocka_unit_test_teardown(test_other_numerics_refused, free_leftovers),
         cmocka_unit_test_teardown(test_inconsistent_snapshots_refused, free_leftovers),
         cmocka_unit_test_teardown(test_hashes_are_of_the_snapshot_encoding, free_leftovers),
         cmocka_unit_test_teardown(test_section_hashes_and_diff, free_leftovers),

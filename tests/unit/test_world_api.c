@@ -36,7 +36,8 @@ static void test_result_names_and_messages(void **state)
 {
     static const char *const expected_names[PG_RESULT_COUNT] = {
         "PG_OK", "PG_ERR_NULL", "PG_ERR_INVALID_ARGUMENT", "PG_ERR_STALE_HANDLE", "PG_ERR_CAPACITY", "PG_ERR_MEMORY",
-        "PG_ERR_ENVELOPE", "PG_ERR_DEGENERATE", "PG_ERR_NOT_CONVEX", "PG_ERR_BODY_TYPE", "PG_ERR_NOT_FOUND"};
+        "PG_ERR_ENVELOPE", "PG_ERR_DEGENERATE", "PG_ERR_NOT_CONVEX", "PG_ERR_BODY_TYPE", "PG_ERR_NOT_FOUND",
+        "PG_ERR_INCOMPATIBLE"};
     int i, j;
     (void)state;
     for (i = 0; i < PG_RESULT_COUNT; ++i) {

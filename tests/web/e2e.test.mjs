@@ -381,12 +381,37 @@ test('every shipped replay (tests/replays, tests/replays/recorded) plays with ev
   }
 });
 
-test('a corrupt or truncated file shows the reader\'s error (offset and field) and the page keeps working', async () => {
+// FNV-1a 64 (pg_hash_bytes), to seal a header edited here as a writer would.
+function fnv1a64(bytes) {
+  let h = 0xcbf29ce484222325n;
+  for (const b of bytes) h = ((h ^ BigInt(b)) * 0x100000001b3n) & 0xffffffffffffffffn;
+  return h;
+}
+function reseal(buffer, headerHashAt) {
+  buffer.writeBigUInt64LE(fnv1a64(buffer.subarray(0, headerHashAt)), headerHashAt);
+  buffer.writeBigUInt64LE(fnv1a64(buffer.subarray(0, buffer.length - 8)), buffer.length - 8);
+  return buffer;
+}
+
+test('a corrupt, truncated, old or other-numerics file shows the reader\'s error (offset and field) and the page keeps working', async () => {
   const good = readFileSync(join(root, 'tests/replays/commands.pgr'));
   const flipped = Buffer.from(good);
   flipped[200] ^= 0x10;
   const truncated = good.subarray(0, Math.floor(good.length / 2));
-  for (const [name, buffer] of [['flipped.pgr', flipped], ['truncated.pgr', truncated]]) {
+  // recorded with an 8-bit sine table (the numeric configuration, header bytes 20..23)
+  const otherTable = Buffer.from(good);
+  otherTable.writeUInt32LE(8, 20);
+  reseal(otherTable, 36);
+  // format 1: the same file without the numeric configuration
+  const format1 = Buffer.concat([good.subarray(0, 20), good.subarray(24)]);
+  format1.writeUInt16LE(1, 8);
+  reseal(format1, 32);
+  const expected = {
+    'other-table.pgr': /numeric_config: recorded with an 8-bit sine table; this build has a 12-bit sine table/,
+    'format1.pgr': /format_version: format version 1 is older than this build's 2: convert it with `pogon-replay upgrade IN OUT`/,
+  };
+  for (const [name, buffer] of [['flipped.pgr', flipped], ['truncated.pgr', truncated], ['other-table.pgr', otherTable],
+    ['format1.pgr', format1]]) {
     const playing = await hook(() => window.pogon.playback());
     await chooseReplayFile({ name, mimeType: 'application/octet-stream', buffer });
     try {
@@ -396,6 +421,7 @@ test('a corrupt or truncated file shows the reader\'s error (offset and field) a
     }
     const text = await message();
     assert.match(text, /offset \d+, \w+ field \w+/, `${name}: ${text}`);
+    if (expected[name]) assert.match(text, expected[name], `${name}: ${text}`);
     assert.ok(await shownAsRefusal(), 'shown as an error');
     // nothing changed: the replay that was playing is still the one shown
     const still = await hook(() => window.pogon.playback());

@@ -4,25 +4,29 @@
  *   pogon-replay verify FILE...
  *       Replays each file and compares every checkpoint. Prints the final hash of each.
  *   pogon-replay info FILE
- *       Header, scene summary, frame count, command counts per kind.
+ *       Header (engine version, numeric configuration), scene summary, frame count,
+ *       command counts per kind. A file this build cannot play (another numeric
+ *       configuration) shows its header and the reason, exit 2.
  *   pogon-replay record --scene SCENE --frames N [--script SCRIPT] [--checkpoint K] -o FILE
  *       Makes a replay from a scene file and a script of timed commands (format below).
  *       K (default 60) is the checkpoint interval in frames.
  *   pogon-replay rehash FILE...
  *       Replays each file and rewrites its checkpoints, final hash, checksums and engine
  *       version in place (after an intended change of the numerics).
- *   pogon-replay upgrade FILE...
- *       Converts files of an older format version (1: no joint commands) to this
- *       build's in place: their records are valid in this version, so the header's
- *       version, its hash and the file checksum are rewritten, and the result is checked.
+ *   pogon-replay upgrade IN OUT
+ *       Converts a file of an older format version into this build's (pg_replay_upgrade),
+ *       stamped with this build's numeric configuration, and writes OUT only when the
+ *       result replays here checkpoint for checkpoint (IN and OUT may be the same file).
  *   pogon-replay synctest FILE... --rollback K
  *       Steps each replay saving a snapshot every frame; from frame K on, restores the
  *       snapshot of K frames ago, re-steps those K frames and compares the whole and the
  *       per-section hashes with the first pass.
  *
  * Exit status: 0 all good; 1 a replay diverged (verify, synctest); 2 a file is corrupt,
- * truncated, of another format version or fails its checksums, or the command line or
- * a script is wrong. Messages name the file offset and the field.
+ * truncated, of another format version (an older one: upgrade) or of another numeric
+ * configuration (recorded with another sine table: it cannot replay here, so it is
+ * refused, never reported as a divergence) or fails its checksums, or the command line
+ * or a script is wrong. Messages name the file offset and the field.
  *
  * SCRIPT FORMAT (one command per line; '#' starts a comment; blank lines are ignored)
  *     FRAME COMMAND ARGS...
@@ -228,15 +232,17 @@ static void replay_free(replay *r)
     r->memory = NULL;
 }
 
-/* Read and validate; then load the scene into the player. Returns 0 or EXIT_BAD. */
-static int replay_open(replay *r, const char *path, pg_replay_frame_result *first)
+/* Validate the file in `data` (size bytes, malloc'ed: the replay owns it from here) and
+ * load its scene into the player; `path` names it in messages. Returns 0 or EXIT_BAD (a
+ * file of another format version or numeric configuration is one too). */
+static int replay_load(replay *r, const char *path, uint8_t *data, size_t size, pg_replay_frame_result *first)
 {
     pg_replay_error e;
     pg_result res;
     memset(r, 0, sizeof *r);
     r->path = path;
-    r->data = read_file(path, &r->size);
-    if (r->data == NULL) return EXIT_BAD;
+    r->data = data;
+    r->size = size;
     res = pg_replay_read(r->data, r->size, &r->info, &e);
     if (res != PG_OK) {
         print_replay_error(path, &e);
@@ -257,6 +263,18 @@ static int replay_open(replay *r, const char *path, pg_replay_frame_result *firs
         return EXIT_BAD;
     }
     return 0;
+}
+
+/* Read, validate and load (replay_load). */
+static int replay_open(replay *r, const char *path, pg_replay_frame_result *first)
+{
+    size_t size = 0;
+    uint8_t *data = read_file(path, &size);
+    if (data == NULL) {
+        memset(r, 0, sizeof *r);
+        return EXIT_BAD;
+    }
+    return replay_load(r, path, data, size, first);
 }
 
 static void warn_engine_version(const replay *r)
@@ -338,15 +356,15 @@ done:
     free(again.data);
 }
 
-static int verify_one(const char *path)
+/* Play a loaded replay (replay_load) to its end, comparing every checkpoint; frees it. */
+static int verify_loaded(replay *rp, pg_replay_frame_result fr)
 {
-    replay r;
-    pg_replay_frame_result fr;
+    replay r = *rp;
+    const char *path = r.path;
     snap good = {0, 0, 0};
     size_t *offsets;
     uint32_t n_off = 0, good_frame = 0, last_cp_frame = 0;
-    int rc = replay_open(&r, path, &fr);
-    if (rc != 0) return rc;
+    int rc = 0;
     warn_engine_version(&r);
     offsets = (size_t *)xmalloc(sizeof(size_t) * r.info.checkpoint_interval);
     if (!fr.match) {
@@ -402,6 +420,15 @@ out:
     return rc;
 }
 
+static int verify_one(const char *path)
+{
+    replay r;
+    pg_replay_frame_result fr;
+    int rc = replay_open(&r, path, &fr);
+    if (rc != 0) return rc;
+    return verify_loaded(&r, fr);
+}
+
 static int cmd_verify(int argc, char **argv)
 {
     int i, worst = 0;
@@ -417,6 +444,35 @@ static int cmd_verify(int argc, char **argv)
 }
 
 /* ---- info ----------------------------------------------------------------------------- */
+static void print_numeric_config(const pg_replay_info *in)
+{
+    char text[128];
+    pg_numeric_config_describe(in->numeric_config, text, sizeof text);
+    printf("numerics        %s (numeric configuration 0x%08x; this build: ", text, in->numeric_config);
+    pg_numeric_config_describe(pg_numeric_config(), text, sizeof text);
+    printf("%s)\n", in->numeric_config == pg_numeric_config() ? "the same" : text);
+}
+
+/* What the header of a file this build cannot play says (pg_replay_read filled *in). */
+static int info_of_unplayable(const char *path, const uint8_t *data, size_t size)
+{
+    pg_replay_info in;
+    pg_replay_error e;
+    pg_result res = pg_replay_read(data, size, &in, &e);
+    if (res != PG_ERR_INCOMPATIBLE || in.format_version != PG_REPLAY_FORMAT_VERSION) {
+        print_replay_error(path, &e);
+        return EXIT_BAD;
+    }
+    printf("file            %s (%zu bytes)\n", path, size);
+    printf("format          pogon replay, format version %u, recorded with pogon %u.%u.%u\n", in.format_version,
+           in.engine_major, in.engine_minor, in.engine_patch);
+    print_numeric_config(&in);
+    printf("frames          %u, %llu commands, final hash %016llx\n", in.frame_count,
+           (unsigned long long)in.command_count, (unsigned long long)in.final_hash);
+    print_replay_error(path, &e);
+    return EXIT_BAD;
+}
+
 static int cmd_info(int argc, char **argv)
 {
     replay r;
@@ -430,7 +486,18 @@ static int cmd_info(int argc, char **argv)
         fprintf(stderr, "usage: pogon-replay info FILE\n");
         return EXIT_BAD;
     }
-    rc = replay_open(&r, argv[0], &fr);
+    {
+        size_t size = 0;
+        uint8_t *data = read_file(argv[0], &size);
+        pg_replay_info in;
+        if (data == NULL) return EXIT_BAD;
+        if (pg_replay_read(data, size, &in, NULL) == PG_ERR_INCOMPATIBLE) {
+            rc = info_of_unplayable(argv[0], data, size);
+            free(data);
+            return rc;
+        }
+        rc = replay_load(&r, argv[0], data, size, &fr);
+    }
     if (rc != 0) return rc;
     def = pg_world_get_def(r.player.world);
     st = pg_world_get_stats(r.player.world);
@@ -451,6 +518,7 @@ static int cmd_info(int argc, char **argv)
     printf("file            %s (%zu bytes)\n", argv[0], r.size);
     printf("format          pogon replay, format version %u, recorded with pogon %u.%u.%u\n", r.info.format_version,
            r.info.engine_major, r.info.engine_minor, r.info.engine_patch);
+    print_numeric_config(&r.info);
     printf("checkpoints     every %u frames: %u, %u section hashes each\n", r.info.checkpoint_interval,
            r.info.checkpoint_count, r.info.section_count);
     printf("frames          %u\n", r.info.frame_count);
@@ -579,83 +647,60 @@ static int cmd_rehash(int argc, char **argv)
     return worst;
 }
 
-/* ---- upgrade ---------------------------------------------------------------------------- */
-static void put_le64(uint8_t *p, uint64_t v)
-{
-    int i;
-    for (i = 0; i < 8; ++i) p[i] = (uint8_t)((v >> (8 * i)) & 0xFFu);
-}
-
-static uint64_t get_le64(const uint8_t *p)
-{
-    uint64_t v = 0;
-    int i;
-    for (i = 7; i >= 0; --i) v = (v << 8) | p[i];
-    return v;
-}
-
-/* Format 1 files hold only records that format 3 reads the same (it added command
- * kinds), and their block hashes start after the scene: the header's version and hash
- * and the file checksum are all that change. */
-static int upgrade_one(const char *path)
-{
-    size_t size;
-    uint8_t *d = read_file(path, &size);
-    uint32_t version;
-    pg_replay_info info;
-    pg_replay_error e;
-    if (d == NULL) return EXIT_BAD;
-    if (size < PG_REPLAY_HEADER_SIZE + PG_REPLAY_TRAILER_SIZE || memcmp(d, PG_REPLAY_MAGIC, 8) != 0) {
-        fprintf(stderr, "%s: not a pogon replay file (it must start with \"PGREPLAY\")\n", path);
-        free(d);
-        return EXIT_BAD;
-    }
-    version = (uint32_t)d[8] | (uint32_t)d[9] << 8;
-    if (version == PG_REPLAY_FORMAT_VERSION) {
-        printf("%s: already format version %u\n", path, version);
-        free(d);
-        return 0;
-    }
-    if (version != 1u) {
-        fprintf(stderr, "%s: format version %u: upgrade converts format version 1 to %u\n", path, version, PG_REPLAY_FORMAT_VERSION);
-        free(d);
-        return EXIT_BAD;
-    }
-    if (get_le64(d + 32) != pg_hash_bytes(PG_HASH_SEED, d, 32) || get_le64(d + size - 8) != pg_hash_bytes(PG_HASH_SEED, d, size - 8)) {
-        fprintf(stderr, "%s: the header hash or the file checksum does not match: the file is damaged, not upgraded\n", path);
-        free(d);
-        return EXIT_BAD;
-    }
-    d[8] = (uint8_t)(PG_REPLAY_FORMAT_VERSION & 0xFFu);
-    d[9] = (uint8_t)(PG_REPLAY_FORMAT_VERSION >> 8);
-    put_le64(d + 32, pg_hash_bytes(PG_HASH_SEED, d, 32));
-    put_le64(d + size - 8, pg_hash_bytes(PG_HASH_SEED, d, size - 8));
-    if (pg_replay_read(d, size, &info, &e) != PG_OK) {
-        print_replay_error(path, &e);
-        free(d);
-        return EXIT_BAD;
-    }
-    if (!write_file(path, d, size)) {
-        free(d);
-        return EXIT_BAD;
-    }
-    printf("%s: upgraded from format version 1 to %u\n", path, PG_REPLAY_FORMAT_VERSION);
-    free(d);
-    return 0;
-}
-
+/* ---- upgrade -------------------------------------------------------------------------- */
+/* An older format into this build's (pg_replay_upgrade), stamped with this build's
+ * numeric configuration and written only when it replays with this build. */
 static int cmd_upgrade(int argc, char **argv)
 {
-    int i, worst = 0;
-    if (argc < 1) {
-        fprintf(stderr, "usage: pogon-replay upgrade FILE...\n");
+    const char *in, *out;
+    uint8_t *data, *conv;
+    size_t size = 0, need = 0;
+    pg_replay_error e;
+    pg_replay_frame_result fr;
+    replay r;
+    pg_result res;
+    int rc;
+    uint32_t from;
+    char config[128];
+    if (argc != 2) {
+        fprintf(stderr, "usage: pogon-replay upgrade IN OUT\n");
         return EXIT_BAD;
     }
-    for (i = 0; i < argc; ++i) {
-        int rc = upgrade_one(argv[i]);
-        if (rc > worst) worst = rc;
+    in = argv[0];
+    out = argv[1];
+    data = read_file(in, &size);
+    if (data == NULL) return EXIT_BAD;
+    from = size >= 10 ? (uint32_t)data[8] | (uint32_t)data[9] << 8 : 0u;
+    res = pg_replay_upgrade(data, size, pg_numeric_config(), data, 0, &need, &e);
+    if (res == PG_ERR_MEMORY) {
+        conv = (uint8_t *)xmalloc(need);
+        res = pg_replay_upgrade(data, size, pg_numeric_config(), conv, need, &need, &e);
+    } else {
+        conv = NULL;
     }
-    return worst;
+    free(data);
+    if (res != PG_OK) {
+        print_replay_error(in, &e);
+        free(conv);
+        return EXIT_BAD;
+    }
+    /* prove the stamp: the upgraded file must replay with this build (replay_load owns conv) */
+    pg_numeric_config_describe(pg_numeric_config(), config, sizeof config);
+    rc = replay_load(&r, in, conv, need, &fr);
+    if (rc == 0) {
+        uint8_t *copy = (uint8_t *)xmalloc(need);
+        memcpy(copy, conv, need);
+        rc = verify_loaded(&r, fr);
+        if (rc == 0 && !write_file(out, copy, need)) rc = EXIT_BAD;
+        if (rc == 0)
+            printf("%s: format %u -> %u, numeric configuration: %s; written to %s\n", in, from,
+                   PG_REPLAY_FORMAT_VERSION, config, out);
+        free(copy);
+    }
+    if (rc != 0)
+        fprintf(stderr, "%s: not upgraded: it does not replay with this build (%s); upgrade it with a build "
+                        "configured like its recorder\n", in, config);
+    return rc != 0 ? EXIT_BAD : 0;
 }
 
 /* ---- synctest ------------------------------------------------------------------------- */
@@ -1554,7 +1599,7 @@ static void usage(FILE *out)
             "  pogon-replay info FILE\n"
             "  pogon-replay record --scene SCENE --frames N [--script SCRIPT] [--checkpoint K] -o FILE\n"
             "  pogon-replay rehash FILE...\n"
-            "  pogon-replay upgrade FILE...\n"
+            "  pogon-replay upgrade IN OUT\n"
             "  pogon-replay synctest FILE... --rollback K\n"
             "exit status: 0 ok, 1 diverged, 2 bad file or usage\n");
 }
