@@ -85,11 +85,11 @@ static void pass(const pg_joint_stage *s, const step_context *ctx, solver_body *
 
 void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies) { pass(s, ctx, bodies, 1); }
 /* The relax stage sweeps the joints' rigid rows JOINT_RELAX_ITERATIONS times (springs
- * and soft parts act in the solve pass only). One sweep leaves a long structure's
- * relative velocities far from consistent, since Gauss-Seidel carries a change one joint
- * a sweep: a cantilever of 10 welded boxes kept swinging 1 m up and down, and a 40-link
- * chain holding a box of 50 links' mass took 10 s to settle. Without bias the extra
- * sweeps add no energy; 8 settle both within 3 s (docs/joints.md). */
+ * and soft parts act in the solve pass only). Gauss-Seidel carries a change one joint a
+ * sweep, so after one sweep a long structure's relative velocities are far from
+ * consistent, and a welded cantilever or a long chain under a heavy load swings for long
+ * on its soft joints (test_joint_weld, test_joint_chain assert that they come to rest).
+ * Without bias the extra sweeps add no energy (docs/joints.md). */
 #define JOINT_RELAX_ITERATIONS 8
 
 void pg__joints_relax(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies)
