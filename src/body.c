@@ -6,6 +6,7 @@
 #include "envelope.h"
 #include "error.h"
 #include "island.h"
+#include "joint_pool.h"
 #include "mass.h"
 #include "reach.h"
 #include "speed_cap.h"
@@ -130,6 +131,7 @@ pg_result pg_body_create(pg_world *world, const pg_body_def *def, pg_body_id *ou
     b->angular_damping = def->angular_damping;
     b->gravity_scale = def->gravity_scale;
     b->first_shape = PG_NULL_INDEX;
+    b->first_joint = PG_NULL_INDEX;
     b->island = PG_NULL_INDEX;
     b->user_data = def->user_data;
     if (def->type == PG_BODY_DYNAMIC) { /* a dynamic body without shapes weighs 1 kg */
@@ -149,6 +151,7 @@ pg_result pg_body_destroy(pg_world *world, pg_body_id id)
     uint32_t s, next;
     if (world == NULL) return PG_ERR_NULL;
     if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_body_destroy: body handle is stale or invalid");
+    pg__joints_remove_of_body(world, id.index);
     pg__remove_body_contacts(world, id.index);
     for (s = b->first_shape; s != PG_NULL_INDEX; s = next) {
         next = world->shapes[s].next;

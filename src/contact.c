@@ -11,6 +11,7 @@
 #include "envelope.h"
 #include "events.h"
 #include "island.h"
+#include "joint_pool.h"
 #include "world_types.h"
 
 
@@ -20,7 +21,9 @@ static int shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb)
     const pg_body *ba = &w->bodies[a->body], *bb = &w->bodies[b->body];
     if (a->body == b->body) return 0;
     if (ba->type != PG_BODY_DYNAMIC && bb->type != PG_BODY_DYNAMIC) return 0;
-    return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
+    if ((a->category & b->mask) == 0 || (b->category & a->mask) == 0) return 0;
+    /* joined bodies collide only when a joint says so (collide_connected) */
+    return ba->first_joint == PG_NULL_INDEX || bb->first_joint == PG_NULL_INDEX || !pg__joint_blocks_collision(w, a->body, b->body);
 }
 
 /* The same for continuous.c; the merge below keeps its inlined copy. */

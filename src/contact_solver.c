@@ -68,30 +68,6 @@ typedef struct contact_constraint {
     constraint_point p[2];
 } constraint;
 
-/* Box2D v3's b2MakeSoft in fixed point: omega = 2 pi hz, a1 = 2 zeta + h omega,
- * a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3,
- * impulse scale a3. h = 1 / n_per_second. */
-static softness make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
-{
-    softness s;
-    int64_t omega = row_round((int64_t)hertz * PG_FIX_TWO_PI, 16); /* Q16 */
-    s.floor_depth = 0; /* the caller sets it from the push floor (pg__contacts_set_softness) */
-    int64_t h_omega = (omega * 2 + (int64_t)n_per_second) / (2 * (int64_t)n_per_second);
-    int64_t a1 = 2 * (int64_t)zeta + h_omega;
-    int64_t a2 = row_round(h_omega * a1, 16);
-    s.bias_rate = a1 > 0 ? (pg_fix)((omega * 65536 + a1 / 2) / a1) : 0;
-    s.mass_scale = (int32_t)((a2 * (INT64_C(1) << 30) + (65536 + a2) / 2) / (65536 + a2));
-    s.impulse_scale = (int32_t)(((INT64_C(1) << 46) + (65536 + a2) / 2) / (65536 + a2));
-    {
-        /* a soft row at rest (rel = 0) keeps its lambda when mass_scale bias = -impulse_scale
-         * lambda; impulse_scale < 2^30, so the product fits */
-        int64_t hold = s.mass_scale > 0 ? ((int64_t)s.impulse_scale * (1 << 16) + s.mass_scale / 2) / s.mass_scale : INT32_MAX;
-        s.hold_rate = (int32_t)(hold > INT32_MAX ? INT32_MAX : hold);
-    }
-    return s;
-}
-
-
 /* The separation from which up |round(bias_rate s / 2^16)| <= floor (DEEP PUSH): there
  * |bias_rate s| <= floor 2^16, so the rounded bias is within the floor too. */
 static int64_t floor_depth(const softness *s, pg_fix floor)
@@ -1126,8 +1102,8 @@ void pg__contacts_set_softness(step_context *ctx, const pg_world_def *def)
     hertz = def->contact_hertz < hertz_cap ? def->contact_hertz : hertz_cap;
     hertz_static = pg_fix_add(hertz, hertz);
     if (hertz_static > hertz_cap) hertz_static = hertz_cap;
-    ctx->soft = make_soft(hertz, def->contact_damping_ratio, ctx->n);
-    ctx->soft_static = make_soft(hertz_static, def->contact_damping_ratio, ctx->n);
+    ctx->soft = pg__make_soft(hertz, def->contact_damping_ratio, ctx->n);
+    ctx->soft_static = pg__make_soft(hertz_static, def->contact_damping_ratio, ctx->n);
     ctx->push_max = def->contact_push_max;
     ctx->push_floor = ctx->push_max / 32;
     ctx->soft.floor_depth = floor_depth(&ctx->soft, ctx->push_floor);

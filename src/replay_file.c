@@ -363,7 +363,7 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     in.section_count = get_u32(data + OFF_SECTIONS);
     if (in.flags != 0)
         return value_error(error, OFF_FLAGS, "header", "flags", -1, "flags ", in.flags,
-                           " are not defined in format version 2 (must be 0)");
+                           " are not defined in this format version (must be 0)");
     if (in.checkpoint_interval == 0)
         return value_error(error, OFF_INTERVAL, "header", "checkpoint_interval", -1, "checkpoint interval ", 0,
                            " is invalid (must be at least 1)");

@@ -10,11 +10,13 @@
  *   restitution              once after the substeps
  *   store                    impulses back into the world for the next step's warm start
  * then the bodies are written back and fast-turning ones swept (continuous.c).
- * Contacts are the one kind today (contact_solver.c); a joint kind is a file of its own
- * and one call per stage here. docs/solver-design.md gives the reasons. */
+ * The kinds: joints (joint_solver.c, one file per joint kind) and contacts
+ * (contact_solver.c), in that order in every stage. docs/solver-design.md gives the
+ * reasons. */
 #include "body.h"
 #include "contact_solver.h"
 #include "continuous.h"
+#include "joint_solver.h"
 #include "solver.h"
 #include "solver_kernel.h"
 
@@ -36,11 +38,14 @@ static size_t constraint_area_bytes(const pg_world_def *def)
     return ((cons > sweeps ? cons : sweeps) + 7u) & ~(size_t)7u;
 }
 
+/* The joints' constraints go last, after the deep push's list, aligned to 8. */
+#define joints_offset_pad 8u
+
 size_t pg__solver_scratch_bytes(const pg_world_def *def)
 {
     /* ... the active bodies, and the constraints of the pseudo pass (DEEP PUSH) */
     return constraints_offset(def->max_bodies) + constraint_area_bytes(def) + sizeof(uint32_t) * def->max_bodies +
-           sizeof(uint32_t) * def->max_contacts + 64u;
+           sizeof(uint32_t) * def->max_contacts + joints_offset_pad + pg__joint_constraint_bytes(def->max_joints) + 64u;
 }
 
 /* The gravity term g (a pg_fix) plus the force term f = round(F invm), which
@@ -78,7 +83,7 @@ static inline pg_angle angle_step(pg_fix w, int64_t angle_per_w)
  * Out of line: it runs once per substep, and keeps pg__solve small. */
 #define TIME_ONE (INT64_C(1) << 32)
 PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const uint32_t *active, uint32_t n_active,
-                                       const step_context *ctx, uint32_t sub, int rotation)
+                                       const step_context *ctx, uint32_t sub, int rotation, int joints)
 {
     int64_t t0 = ctx->h_q32 * (int64_t)sub, t1 = ctx->h_q32 * (int64_t)(sub + 1u); /* <= 2^32 / step_hz + 8 */
     int64_t whole = 0; /* 1 when t1 >= 2^32 (see TIME_ONE); t0 < 2^32 always */
@@ -98,6 +103,12 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
         sb->dv_x = (int32_t)((int64_t)sb->v.x - sb->v_pre.x);
         sb->dv_y = (int32_t)((int64_t)sb->v.y - sb->v_pre.y);
         sb->dw = (int64_t)sb->w - sb->w_pre;
+        if (joints) { /* the joints warm start their own rows: leave their change out */
+            sb->dv_x = pg__sat64((int64_t)sb->dv_x - sb->jv_x);
+            sb->dv_y = pg__sat64((int64_t)sb->dv_y - sb->jv_y);
+            sb->dw -= sb->jv_w;
+            sb->jv_x = sb->jv_y = sb->jv_w = 0;
+        }
         if (sb->accel.x != 0 || sb->accel.y != 0) {
             int64_t vx, vy;
             if (sb->accel.x == g.x && sb->accel.y == g.y) { /* the same formula, computed once */
@@ -164,11 +175,14 @@ void pg__solve(pg_world *w)
     unsigned char *area = scratch + constraints_offset(w->def.max_bodies); /* the constraints */
     uint32_t *active = (uint32_t *)(void *)(area + constraint_area_bytes(&w->def));
     uint32_t *deep_list = active + w->def.max_bodies;
+    void *joint_area = (void *)(((uintptr_t)(deep_list + w->def.max_contacts) + 7u) & ~(uintptr_t)7u);
     pg_sweep *sweeps = (pg_sweep *)(void *)area; /* after the store stage (constraint_area_bytes) */
     uint32_t n_active = 0, n_fast = 0, i, sub;
     int sweeping;
     step_context ctx;
     pg_contact_stage contacts;
+    pg_joint_stage joints;
+    int have_joints;
     const uint32_t effects = w->def.effects;
     const int rotation = (effects & PG_EFFECT_ROTATION) != 0;
 
@@ -203,6 +217,7 @@ void pg__solve(pg_world *w)
         d->lin_damp = d->ang_damp = PG_ROT_ONE;
         d->v_pre = pg_v2_zero();
         d->w_pre = 0;
+        d->jv_x = d->jv_y = d->jv_w = 0;
     }
 
     /* bodies */
@@ -231,6 +246,7 @@ void pg__solve(pg_world *w)
         sb->ang_damp = PG_ROT_ONE;
         sb->v_pre = sb->v; /* the first substep warm starts from the constraints */
         sb->w_pre = sb->w;
+        sb->jv_x = sb->jv_y = sb->jv_w = 0;
         if (b->type != PG_BODY_DYNAMIC) continue;
         {
             int64_t ax = 0, ay = 0, alpha = 0;
@@ -260,16 +276,23 @@ void pg__solve(pg_world *w)
     }
 
     /* The stages: each constraint kind takes part in each through a call of its own. */
+    joints.count = 0;
+    if (w->joint_count > 0) pg__joints_prepare(&joints, &ctx, bodies, joint_area);
+    have_joints = joints.count > 0;
     pg__contacts_prepare(&contacts, &ctx, bodies, area, deep_list);
     for (sub = 0; sub < w->def.substeps; ++sub) {
         ctx.sub = sub;
-        integrate_velocities(w, bodies, active, n_active, &ctx, sub, rotation);
+        integrate_velocities(w, bodies, active, n_active, &ctx, sub, rotation, have_joints);
+        if (have_joints) pg__joints_warm_start(&joints, bodies);
         pg__contacts_warm_start(&contacts, &ctx, bodies, active, n_active);
+        if (have_joints) pg__joints_solve(&joints, &ctx, bodies);
         pg__contacts_solve(&contacts, &ctx, bodies);
         integrate_positions(bodies, active, n_active, &ctx, contacts.deep);
+        if (have_joints) pg__joints_relax(&joints, &ctx, bodies);
         pg__contacts_relax(&contacts, &ctx, bodies);
     }
     pg__contacts_restitution(&contacts, &ctx, bodies);
+    if (have_joints) pg__joints_store(&joints, w);
     pg__contacts_store(&contacts, w);
 
     /* write back, and the sweeps of bodies that turned too far for their speculative

@@ -171,6 +171,7 @@ typedef struct pg_world_def {
     uint32_t max_bodies;        /**< most bodies at once, default 1024 */
     uint32_t max_shapes;        /**< most shapes at once, default 2048 */
     uint32_t max_contacts;      /**< most contacts at once, default 4096 */
+    uint32_t max_joints;        /**< most joints at once (pogon/joint.h), default 64 (0 .. 2^24) */
     uint32_t pg__cookie;        /**< internal: set by pg_default_world_def(), which every def
                                    must start from; a def without it is refused */
 } pg_world_def;
@@ -511,4 +512,6 @@ const pg_contact_event *pg_world_end_events(const pg_world *world, uint32_t *cou
 #ifdef __cplusplus
 }
 #endif
+
+#include "pogon/joint.h"
 #endif

@@ -3,9 +3,9 @@
  * Each operation takes one byte to choose what to do and as many more as it needs for
  * its values (an exhausted input reads zeros): a command of any kind (pg_command_apply,
  * fields drawn from ordinary values, the envelope's edges and raw bits, handles live,
- * stale or zero; geometry of every kind, degenerate or filled in by hand), a shape
- * destroyed, a query of every kind, a step, a snapshot saved or restored into the
- * running world (whole or with a byte changed), or a check. After every operation:
+ * stale or zero; geometry of every kind, degenerate or filled in by hand), a joint call
+ * (pogon/joint.h: a create of any kind, a setter, a destroy), a shape destroyed, a query
+ * of every kind, a step, a snapshot saved or restored into the running world (whole or with a byte changed), or a check. After every operation:
  *   - every result is a documented code, and a failing one has a message naming it in
  *     pg_world_last_error();
  *   - a call that failed left the state hash as it was (pogon.h: "A failing call leaves
@@ -167,6 +167,107 @@ static pg_command command(input *in, const pg_body_id *ids, uint32_t n)
     c.flag = next8(in) % 3u;
     c.user_data = next32(in);
     return c;
+}
+
+static pg_joint_id joint(input *in, const pg_joint_id *ids, uint32_t n)
+{
+    uint32_t k = next8(in);
+    pg_joint_id id = {0, 0};
+    if (n == 0 || k >= 240) { /* raw */
+        id.index = k & 7u;
+        id.generation = next8(in);
+        return id;
+    }
+    id = ids[k % n];
+    if (k >= 224) id.generation += 1u; /* stale */
+    return id;
+}
+
+/* One joint call; returns its result and the joint it made in *made (if any). */
+static pg_result joint_call(input *in, pg_world *w, const pg_body_id *bodies, uint32_t nb, const pg_joint_id *joints, uint32_t nj,
+                            pg_joint_id *made)
+{
+    uint32_t k = next8(in) % 12u;
+    pg_joint_id j = joint(in, joints, nj);
+    switch (k) {
+    case 0: {
+        pg_distance_joint_def d = pg_default_distance_joint_def();
+        d.body_a = body(in, bodies, nb);
+        d.body_b = body(in, bodies, nb);
+        d.local_anchor_a = vec(in);
+        d.local_anchor_b = vec(in);
+        d.length = value(in);
+        d.enable_spring = (int)(next8(in) & 1u);
+        d.hertz = value(in);
+        d.damping_ratio = value(in);
+        d.enable_limit = (int)(next8(in) & 1u);
+        d.min_length = value(in);
+        d.max_length = value(in);
+        d.collide_connected = (int)(next8(in) & 1u);
+        return pg_distance_joint_create(w, &d, made);
+    }
+    case 1: {
+        pg_revolute_joint_def d = pg_default_revolute_joint_def();
+        d.body_a = body(in, bodies, nb);
+        d.body_b = body(in, bodies, nb);
+        d.local_anchor_a = vec(in);
+        d.local_anchor_b = vec(in);
+        d.reference_angle = next32(in);
+        d.enable_limit = (int)(next8(in) & 1u);
+        d.lower_angle = value(in);
+        d.upper_angle = value(in);
+        d.enable_motor = (int)(next8(in) & 1u);
+        d.motor_speed = value(in);
+        d.max_motor_torque = value(in);
+        return pg_revolute_joint_create(w, &d, made);
+    }
+    case 2: {
+        pg_weld_joint_def d = pg_default_weld_joint_def();
+        d.body_a = body(in, bodies, nb);
+        d.body_b = body(in, bodies, nb);
+        d.local_anchor_a = vec(in);
+        d.local_anchor_b = vec(in);
+        d.reference_angle = next32(in);
+        d.linear_hertz = value(in);
+        d.angular_hertz = value(in);
+        d.linear_damping_ratio = value(in);
+        d.angular_damping_ratio = value(in);
+        return pg_weld_joint_create(w, &d, made);
+    }
+    case 3: {
+        pg_prismatic_joint_def d = pg_default_prismatic_joint_def();
+        d.body_a = body(in, bodies, nb);
+        d.body_b = body(in, bodies, nb);
+        d.local_anchor_a = vec(in);
+        d.local_anchor_b = vec(in);
+        d.local_axis_a = vec(in);
+        d.enable_limit = (int)(next8(in) & 1u);
+        d.lower_translation = value(in);
+        d.upper_translation = value(in);
+        d.enable_motor = (int)(next8(in) & 1u);
+        d.motor_speed = value(in);
+        d.max_motor_force = value(in);
+        return pg_prismatic_joint_create(w, &d, made);
+    }
+    case 4: {
+        pg_mouse_joint_def d = pg_default_mouse_joint_def();
+        d.body = body(in, bodies, nb);
+        d.target = vec(in);
+        d.hertz = value(in);
+        d.damping_ratio = value(in);
+        d.max_force = value(in);
+        return pg_mouse_joint_create(w, &d, made);
+    }
+    case 5: return pg_joint_destroy(w, j);
+    case 6: return pg_revolute_joint_set_motor(w, j, (int)(next8(in) & 1u), value(in), value(in));
+    case 7: return (next8(in) & 1u) ? pg_revolute_joint_set_limits(w, j, 1, value(in), value(in))
+                                    : pg_prismatic_joint_set_limits(w, j, 1, value(in), value(in));
+    case 8: return (next8(in) & 1u) ? pg_distance_joint_set_length(w, j, value(in))
+                                    : pg_distance_joint_set_spring(w, j, 1, value(in), value(in));
+    case 9: return (next8(in) & 1u) ? pg_mouse_joint_set_target(w, j, vec(in)) : pg_mouse_joint_set_max_force(w, j, value(in));
+    case 10: return pg_joint_set_collide_connected(w, j, (int)(next8(in) & 1u));
+    default: return pg_weld_joint_set_softness(w, j, value(in), value(in), value(in), value(in));
+    }
 }
 
 /* Every live body's state is one the setters accept back, and so is the world's. */
@@ -340,7 +441,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     pg_world_def d = pg_default_world_def();
     pg_world *w = NULL;
     pg_body_id ids[32];
-    uint32_t n = 0, ops = 0;
+    pg_joint_id joints[8];
+    uint32_t n = 0, nj = 0, ops = 0;
     input in;
     in.p = data;
     in.size = size;
@@ -348,12 +450,23 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     d.max_bodies = 16;
     d.max_shapes = 32;
     d.max_contacts = 64;
+    d.max_joints = 8;
     check(pg_world_memory_size(&d) <= sizeof memory_a, "world too large for the buffer", NULL);
     check(pg_world_create(&d, memory_a, sizeof memory_a, &w) == PG_OK, "world", NULL);
     saved_size = 0;
     while (in.pos < in.size && ops++ < 200u) {
         uint32_t op = next8(&in);
-        if (op < 160) {
+        if (op >= 140 && op < 160) {
+            uint64_t before = pg_world_hash(w);
+            pg_joint_id made = {0, 0};
+            pg_result r = joint_call(&in, w, ids, n, joints, nj, &made);
+            if (r != PG_OK) {
+                check(pg_world_hash(w) == before, "a failing joint call changed the world", pg_world_last_error(w));
+            } else if (made.generation != 0) {
+                if (nj < 8u) joints[nj++] = made;
+                else joints[made.index % 8u] = made;
+            }
+        } else if (op < 160) {
             pg_command c = command(&in, ids, n);
             uint64_t before = pg_world_hash(w);
             pg_body_id made = {0, 0};

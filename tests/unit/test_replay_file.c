@@ -140,7 +140,7 @@ static void test_write_read_play(void **state)
     assert_int_equal(size, size2);
     assert_memory_equal(file, file2, size);
     assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
-    assert_int_equal(info.format_version, 2);
+    assert_int_equal(info.format_version, PG_REPLAY_FORMAT_VERSION);
     assert_int_equal(info.engine_major, POGON_VERSION_MAJOR);
     assert_int_equal(info.numeric_config, pg_numeric_config());
     assert_int_equal(info.numeric_config & PG_NUMCFG_TRIG_BITS_MASK, PG_TRIG_TABLE_BITS);
