@@ -203,8 +203,8 @@ void pg__distance_joint_warm_start(joint_constraint *c, solver_body *bodies)
     orient(c, bodies);
     /* a spring's impulse is a force's, made again each substep: not warm started */
     joint_row_apply(&c->axial, &A, &B, (has_spring(c->src) ? 0 : c->axial_imp) + c->lower_imp - c->upper_imp);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
@@ -227,8 +227,8 @@ void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const st
         joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, len - j->lower, 1, &c->soft, use_bias, ctx->n);
         joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, len - j->upper, -1, &c->soft, use_bias, ctx->n);
     }
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__distance_joint_store(const joint_constraint *c, pg_joint *j)

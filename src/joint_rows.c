@@ -13,6 +13,7 @@ void pg__joint_side_init(joint_side *s, const pg_world *w, uint32_t body, pg_vec
     const pg_body *b = &w->bodies[body];
     s->active = active;
     s->slot = slot;
+    s->change = NULL; /* joint_solver.c points a moving side at its body's */
     s->inv_mass = active ? b->inv_mass : 0;
     s->inv_inertia = active && rotation ? b->inv_inertia : 0;
     s->local = pg_v2(pg__sat64((int64_t)anchor.x - b->local_center.x), pg__sat64((int64_t)anchor.y - b->local_center.y));

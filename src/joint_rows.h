@@ -17,6 +17,7 @@
 /* One side of a joint in this step. */
 typedef struct joint_side {
     uint32_t slot;         /* solver body slot (the dummy when the body does not move in this step) */
+    joint_change *change;  /* the body's joint change (NULL for a side that does not move) */
     int active;
     int64_t inv_mass, inv_inertia; /* Q25.38; 0 for a side that does not move */
     pg_vec2 local;         /* anchor less the local centre of mass, body frame */
@@ -101,16 +102,17 @@ static inline void joint_levers_now(joint_constraint *c, const solver_body *bodi
     c->B.lever_now = c->B.active ? pg_rot_apply(bodies[c->B.slot].dq, c->B.lever) : c->B.lever;
 }
 
-/* Store a joint's velocities into a body, adding the change to the body's joint sum
- * (solver_body's jv: the contacts' warm start leaves it out, WARM START). */
-static inline void joint_store(solver_body *b, const velocity *v, int active)
+/* Store a joint's velocities into a side's body, adding the change to the body's joint
+ * change (joint_change: the contacts' warm start leaves it out, WARM START). */
+static inline void joint_store(solver_body *bodies, const joint_side *s, const velocity *v)
 {
+    solver_body *b = &bodies[s->slot];
     int64_t x0 = b->v.x, y0 = b->v.y, w0 = b->w;
-    if (!active) return; /* the dummy side: its coefficients are 0 */
+    if (!s->active) return; /* the dummy side: its coefficients are 0 */
     store_velocity(b, v);
-    b->jv_x += (int64_t)b->v.x - x0;
-    b->jv_y += (int64_t)b->v.y - y0;
-    b->jv_w += (int64_t)b->w - w0;
+    s->change->x += (int64_t)b->v.x - x0;
+    s->change->y += (int64_t)b->v.y - y0;
+    s->change->w += (int64_t)b->w - w0;
 }
 
 /* The anchor's world point now: a moving side's centre plus its lever now. */

@@ -145,7 +145,7 @@ void pg__mouse_joint_warm_start(joint_constraint *c, solver_body *bodies)
     joint_levers_now(c, bodies);
     pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
@@ -172,7 +172,7 @@ void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_
     joint_point_apply(&c->point, &A, &B, nx - c->imp[0], ny - c->imp[1]);
     c->imp[0] = nx;
     c->imp[1] = ny;
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__mouse_joint_store(const joint_constraint *c, pg_joint *j)

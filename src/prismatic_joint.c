@@ -213,8 +213,8 @@ void pg__prismatic_joint_warm_start(joint_constraint *c, solver_body *bodies)
     joint_row_apply(&c->axial, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_row_apply(&c->perp, &A, &B, c->imp[0]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
@@ -234,8 +234,8 @@ void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const s
     joint_row_solve(&c->perp, &c->imp[0], &A, &B, across, &c->soft, use_bias);
     joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(joint_angle_now(&c->B, bodies) - aA - j->reference_angle),
                     &c->soft, use_bias);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__prismatic_joint_store(const joint_constraint *c, pg_joint *j)
