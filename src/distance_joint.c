@@ -203,8 +203,8 @@ void pg__distance_joint_warm_start(joint_constraint *c, solver_body *bodies)
     orient(c, bodies);
     /* a spring's impulse is a force's, made again each substep: not warm started */
     joint_row_apply(&c->axial, &A, &B, (has_spring(c->src) ? 0 : c->axial_imp) + c->lower_imp - c->upper_imp);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
@@ -215,7 +215,7 @@ void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const st
     if (!c->axial.on) return;
     len = orient(c, bodies);
     if (!has_spring(j)) {
-        joint_row_solve(&c->axial, &c->axial_imp, &A, &B, len - j->length, &c->soft, use_bias);
+        pg__joint_row_solve(&c->axial, &c->axial_imp, &A, &B, len - j->length, &c->soft, use_bias);
     } else if (use_bias) { /* the spring: once a substep */
         int64_t v = joint_row_speed(&c->axial, &A, &B), C = clamp64(len - j->length, INT32_MAX);
         int64_t v1 = clamp64(v - row_round(c->spring_k * C, 16), LAMBDA_MAX);
@@ -224,11 +224,11 @@ void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const st
         joint_row_apply(&c->axial, &A, &B, c->axial_imp);
     }
     if (has_limit(j)) {
-        joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, len - j->lower, 1, &c->soft, use_bias, ctx->n);
-        joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, len - j->upper, -1, &c->soft, use_bias, ctx->n);
+        pg__joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, len - j->lower, 1, &c->soft, use_bias, ctx->n);
+        pg__joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, len - j->upper, -1, &c->soft, use_bias, ctx->n);
     }
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__distance_joint_store(const joint_constraint *c, pg_joint *j)

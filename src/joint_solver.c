@@ -10,14 +10,20 @@
 #include "revolute_joint.h"
 #include "weld_joint.h"
 
-size_t pg__joint_constraint_bytes(uint32_t max_joints) { return sizeof(joint_constraint) * (size_t)max_joints; }
+size_t pg__joint_scratch_bytes(uint32_t max_joints, uint32_t max_bodies)
+{
+    return sizeof(joint_change) * ((size_t)max_bodies + 1u) + sizeof(joint_constraint) * (size_t)max_joints;
+}
 
-void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body *bodies, void *area)
+void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body *bodies, void *area, const uint32_t *active,
+                        uint32_t n_active)
 {
     const pg_world *w = ctx->world;
     uint32_t i;
-    s->cons = (joint_constraint *)area;
+    s->change = (joint_change *)area;
+    s->cons = (joint_constraint *)(void *)(s->change + w->def.max_bodies + 1u);
     s->count = 0;
+    for (i = 0; i < n_active; ++i) s->change[active[i]].x = s->change[active[i]].y = s->change[active[i]].w = 0;
     for (i = 0; i < w->joint_high; ++i) {
         const pg_joint *j = &w->joints[i];
         joint_constraint *c;
@@ -40,8 +46,14 @@ void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body 
         }
         pg__joint_side_init(&c->B, w, j->body_b, j->anchor_b, activeB, activeB ? j->body_b : ctx->dummy, ctx->rotation);
         /* the integration keeps these bodies' turn since the step's start (dq): the levers follow it */
-        if (activeA) bodies[c->A.slot].turns_anchors = 1;
-        if (activeB) bodies[c->B.slot].turns_anchors = 1;
+        if (activeA) {
+            bodies[c->A.slot].turns_anchors = 1;
+            c->A.change = &s->change[c->A.slot];
+        }
+        if (activeB) {
+            bodies[c->B.slot].turns_anchors = 1;
+            c->B.change = &s->change[c->B.slot];
+        }
         c->imp[0] = c->imp[1] = c->axial_imp = c->lower_imp = c->upper_imp = c->motor_imp = c->motor_max = 0;
         switch (j->type) {
         case PG_JOINT_DISTANCE: pg__distance_joint_prepare(c, ctx); break;

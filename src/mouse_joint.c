@@ -144,8 +144,8 @@ void pg__mouse_joint_warm_start(joint_constraint *c, solver_body *bodies)
     if (c->point.S == 0) return;
     joint_levers_now(c, bodies);
     pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
-    joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
@@ -157,9 +157,9 @@ void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_
     joint_levers_now(c, bodies);
     pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_anchor_now(&c->B, bodies, &bx, &by);
-    joint_point_speed(&A, &B, c->A.lever_now, c->B.lever_now, &vx, &vy);
-    nx = c->imp[0] + joint_soft_delta(vx, row_round(c->soft.bias_rate * clamp64(bx - c->A.fixed_point.x, INT32_MAX), 16), c->imp[0], &c->soft, 1);
-    ny = c->imp[1] + joint_soft_delta(vy, row_round(c->soft.bias_rate * clamp64(by - c->A.fixed_point.y, INT32_MAX), 16), c->imp[1], &c->soft, 1);
+    pg__joint_point_speed(&A, &B, c->A.lever_now, c->B.lever_now, &vx, &vy);
+    nx = c->imp[0] + pg__joint_soft_delta(vx, row_round(c->soft.bias_rate * clamp64(bx - c->A.fixed_point.x, INT32_MAX), 16), c->imp[0], &c->soft, 1);
+    ny = c->imp[1] + pg__joint_soft_delta(vy, row_round(c->soft.bias_rate * clamp64(by - c->A.fixed_point.y, INT32_MAX), 16), c->imp[1], &c->soft, 1);
     nx = clamp64(nx, LAMBDA_MAX);
     ny = clamp64(ny, LAMBDA_MAX);
     qx = row_round(c->point.kinv[0] * nx + c->point.kinv[1] * ny, 30);
@@ -169,10 +169,10 @@ void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_
         nx = nx * c->motor_max / q;
         ny = ny * c->motor_max / q;
     }
-    joint_point_apply(&c->point, &A, &B, nx - c->imp[0], ny - c->imp[1]);
+    pg__joint_point_apply(&c->point, &A, &B, nx - c->imp[0], ny - c->imp[1]);
     c->imp[0] = nx;
     c->imp[1] = ny;
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__mouse_joint_store(const joint_constraint *c, pg_joint *j)

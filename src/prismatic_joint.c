@@ -213,8 +213,8 @@ void pg__prismatic_joint_warm_start(joint_constraint *c, solver_body *bodies)
     joint_row_apply(&c->axial, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_row_apply(&c->perp, &A, &B, c->imp[0]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
@@ -226,16 +226,16 @@ void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const s
     if (!c->axial.on) return;
     aA = joint_angle_now(&c->A, bodies);
     orient(c, bodies, &along, &across);
-    if (has_motor(j)) joint_motor_solve(&c->axial, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
+    if (has_motor(j)) pg__joint_motor_solve(&c->axial, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
     if (has_limit(j)) {
-        joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, along - j->lower, 1, &c->soft, use_bias, ctx->n);
-        joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, along - j->upper, -1, &c->soft, use_bias, ctx->n);
+        pg__joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, along - j->lower, 1, &c->soft, use_bias, ctx->n);
+        pg__joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, along - j->upper, -1, &c->soft, use_bias, ctx->n);
     }
-    joint_row_solve(&c->perp, &c->imp[0], &A, &B, across, &c->soft, use_bias);
-    joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(joint_angle_now(&c->B, bodies) - aA - j->reference_angle),
+    pg__joint_row_solve(&c->perp, &c->imp[0], &A, &B, across, &c->soft, use_bias);
+    pg__joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(joint_angle_now(&c->B, bodies) - aA - j->reference_angle),
                     &c->soft, use_bias);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__prismatic_joint_store(const joint_constraint *c, pg_joint *j)

@@ -151,10 +151,10 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
     if (c->point.S == 0) return;
     joint_levers_now(c, bodies);
     pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
-    joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
+    pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
@@ -165,18 +165,18 @@ void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const st
     if (c->point.S == 0) return;
     joint_levers_now(c, bodies);
     pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
-    if (has_motor(j)) joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
+    if (has_motor(j)) pg__joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
     if (has_limit(j)) {
         pg_angle rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
         int64_t angle = pg_angle_to_radians(rel);
-        joint_limit_solve(&c->angular, &c->lower_imp, &A, &B, angle - j->lower, 1, &c->soft, use_bias, ctx->n);
-        joint_limit_solve(&c->angular, &c->upper_imp, &A, &B, angle - j->upper, -1, &c->soft, use_bias, ctx->n);
+        pg__joint_limit_solve(&c->angular, &c->lower_imp, &A, &B, angle - j->lower, 1, &c->soft, use_bias, ctx->n);
+        pg__joint_limit_solve(&c->angular, &c->upper_imp, &A, &B, angle - j->upper, -1, &c->soft, use_bias, ctx->n);
     }
     joint_anchor_now(&c->A, bodies, &ax, &ay);
     joint_anchor_now(&c->B, bodies, &bx, &by);
-    joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    pg__joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__revolute_joint_store(const joint_constraint *c, pg_joint *j)

@@ -45,7 +45,7 @@ size_t pg__solver_scratch_bytes(const pg_world_def *def)
 {
     /* ... the active bodies, and the constraints of the pseudo pass (DEEP PUSH) */
     return constraints_offset(def->max_bodies) + constraint_area_bytes(def) + sizeof(uint32_t) * def->max_bodies +
-           sizeof(uint32_t) * def->max_contacts + joints_offset_pad + pg__joint_constraint_bytes(def->max_joints) + 64u;
+           sizeof(uint32_t) * def->max_contacts + joints_offset_pad + pg__joint_scratch_bytes(def->max_joints, def->max_bodies) + 64u;
 }
 
 /* The gravity term g (a pg_fix) plus the force term f = round(F invm), which
@@ -83,7 +83,7 @@ static inline pg_angle angle_step(pg_fix w, int64_t angle_per_w)
  * Out of line: it runs once per substep, and keeps pg__solve small. */
 #define TIME_ONE (INT64_C(1) << 32)
 PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const uint32_t *active, uint32_t n_active,
-                                       const step_context *ctx, uint32_t sub, int rotation, int joints)
+                                       const step_context *ctx, uint32_t sub, int rotation, joint_change *joints)
 {
     int64_t t0 = ctx->h_q32 * (int64_t)sub, t1 = ctx->h_q32 * (int64_t)(sub + 1u); /* <= 2^32 / step_hz + 8 */
     int64_t whole = 0; /* 1 when t1 >= 2^32 (see TIME_ONE); t0 < 2^32 always */
@@ -103,11 +103,12 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
         sb->dv_x = (int32_t)((int64_t)sb->v.x - sb->v_pre.x);
         sb->dv_y = (int32_t)((int64_t)sb->v.y - sb->v_pre.y);
         sb->dw = (int64_t)sb->w - sb->w_pre;
-        if (joints) { /* the joints warm start their own rows: leave their change out */
-            sb->dv_x = pg__sat64((int64_t)sb->dv_x - sb->jv_x);
-            sb->dv_y = pg__sat64((int64_t)sb->dv_y - sb->jv_y);
-            sb->dw -= sb->jv_w;
-            sb->jv_x = sb->jv_y = sb->jv_w = 0;
+        if (joints != NULL) { /* the joints warm start their own rows: leave their change out */
+            joint_change *j = &joints[active[i]];
+            sb->dv_x = pg__sat64((int64_t)sb->dv_x - j->x);
+            sb->dv_y = pg__sat64((int64_t)sb->dv_y - j->y);
+            sb->dw -= j->w;
+            j->x = j->y = j->w = 0;
         }
         if (sb->accel.x != 0 || sb->accel.y != 0) {
             int64_t vx, vy;
@@ -207,7 +208,6 @@ void pg__solve(pg_world *w)
         d->lin_damp = d->ang_damp = PG_ROT_ONE;
         d->v_pre = pg_v2_zero();
         d->w_pre = 0;
-        d->jv_x = d->jv_y = d->jv_w = 0;
     }
 
     /* bodies */
@@ -233,7 +233,6 @@ void pg__solve(pg_world *w)
         sb->ang_damp = PG_ROT_ONE;
         sb->v_pre = sb->v; /* the first substep warm starts from the constraints */
         sb->w_pre = sb->w;
-        sb->jv_x = sb->jv_y = sb->jv_w = 0;
         if (b->type != PG_BODY_DYNAMIC) continue;
         {
             int64_t ax = 0, ay = 0, alpha = 0;
@@ -261,12 +260,12 @@ void pg__solve(pg_world *w)
 
     /* The stages: each constraint kind takes part in each through a call of its own. */
     joints.count = 0;
-    if (w->joint_count > 0) pg__joints_prepare(&joints, &ctx, bodies, joint_area);
+    if (w->joint_count > 0) pg__joints_prepare(&joints, &ctx, bodies, joint_area, active, n_active);
     have_joints = joints.count > 0;
     pg__contacts_prepare(&contacts, &ctx, bodies, area, deep_list);
     for (sub = 0; sub < w->def.substeps; ++sub) {
         ctx.sub = sub;
-        integrate_velocities(w, bodies, active, n_active, &ctx, sub, rotation, have_joints);
+        integrate_velocities(w, bodies, active, n_active, &ctx, sub, rotation, have_joints ? joints.change : NULL);
         if (have_joints) pg__joints_warm_start(&joints, bodies);
         pg__contacts_warm_start(&contacts, &ctx, bodies, active, n_active);
         if (have_joints) pg__joints_solve(&joints, &ctx, bodies);

@@ -50,9 +50,12 @@ typedef struct solver_body {
                              START). Both ends of v are within the kernel's bounds (2^29),
                              so dv fits int32; w_pre, after an angular integration, within
                              +-2^31, so dw needs int64 */
-    int64_t jv_x, jv_y, jv_w; /* what the joints changed in v and w since the substep's
-                             velocity integration: dv leaves it out (WARM START) */
 } solver_body;
+
+/* What the joints changed in a body's v and w since the substep's velocity integration,
+ * which dv leaves out (WARM START): one per solver body slot, in the joints' scratch (an
+ * array beside the solver bodies, so a solver body stays 128 bytes). */
+typedef struct joint_change { int64_t x, y, w; } joint_change;
 
 typedef struct softness {
     pg_fix bias_rate;

@@ -108,10 +108,10 @@ void pg__weld_joint_warm_start(joint_constraint *c, solver_body *bodies)
     if (c->point.S == 0) return;
     joint_levers_now(c, bodies);
     pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
-    joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
+    pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
@@ -125,12 +125,12 @@ void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_c
     joint_levers_now(c, bodies);
     pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
-    if (use_bias || j->hertz2 == 0) joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(rel), &c->soft2, use_bias);
+    if (use_bias || j->hertz2 == 0) pg__joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(rel), &c->soft2, use_bias);
     joint_anchor_now(&c->A, bodies, &ax, &ay);
     joint_anchor_now(&c->B, bodies, &bx, &by);
-    if (use_bias || j->hertz == 0) joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
-    joint_store(&bodies[c->A.slot], &A, c->A.active);
-    joint_store(&bodies[c->B.slot], &B, c->B.active);
+    if (use_bias || j->hertz == 0) pg__joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
+    joint_store(bodies, &c->A, &A);
+    joint_store(bodies, &c->B, &B);
 }
 
 void pg__weld_joint_store(const joint_constraint *c, pg_joint *j)

@@ -241,7 +241,8 @@ uint32_t pg_body_joints(const pg_world *world, pg_body_id body, pg_joint_id *out
  * force accumulators. A breakable joint is user code: read this, and destroy the joint
  * when it is too large. */
 typedef struct pg_joint_reaction {
-    int64_t force_x, force_y; /**< N, Q48.16 */
+    int64_t force_x; /**< N, Q48.16 */
+    int64_t force_y; /**< N, Q48.16 */
     int64_t torque;           /**< N m, Q48.16 */
 } pg_joint_reaction;
 /** The joint's reaction now (zeros and PG_ERR_STALE_HANDLE for an invalid handle). */
