@@ -193,12 +193,29 @@ const char *pg__mass_data_problem(pg_mass_data md, int rotates)
     return NULL;
 }
 
+/* A body's geometries and densities for pg_compound_mass (at most 64 shapes, plus one
+ * being added), in the world's solver scratch, which is free between steps; the
+ * compound's work space follows them (pg__body_mass_scratch_bytes). */
+typedef struct mass_lists {
+    const pg_geom *geoms[65];
+    pg_fix densities[65];
+} mass_lists;
+
+#define MASS_LISTS_BYTES ((sizeof(mass_lists) + 7u) & ~(size_t)7u) /* the work space is 8-aligned */
+
+size_t pg__body_mass_scratch_bytes(void) { return MASS_LISTS_BYTES + pg__mass_work_bytes(); }
+
+static mass_lists *lists_of(const pg_world *world) { return (mass_lists *)world->solver_scratch; }
+
+void *pg__body_mass_work(const pg_world *world) { return (unsigned char *)world->solver_scratch + MASS_LISTS_BYTES; }
+
 const char *pg__body_mass_problem(const pg_world *world, uint32_t body_index, pg_fix density, uint32_t skip,
                                   const pg_geom *extra, pg_fix extra_density, int rotates)
 {
     const pg_body *b = &world->bodies[body_index];
-    const pg_geom *geoms[65];
-    pg_fix densities[65];
+    mass_lists *l = lists_of(world);
+    const pg_geom **geoms = l->geoms;
+    pg_fix *densities = l->densities;
     int n = 0;
     uint32_t s;
     pg_mass_data md;
@@ -213,7 +230,7 @@ const char *pg__body_mass_problem(const pg_world *world, uint32_t body_index, pg
         densities[n] = extra_density;
         ++n;
     }
-    md = pg_compound_mass(geoms, densities, n);
+    md = pg_compound_mass(geoms, densities, n, pg__body_mass_work(world));
     return pg__mass_data_problem(md, rotates);
 }
 
@@ -246,8 +263,9 @@ void pg__body_set_inverse_mass(pg_body *b)
 void pg__body_update_mass(pg_world *world, uint32_t body_index)
 {
     pg_body *b = &world->bodies[body_index];
-    const pg_geom *geoms[64];
-    pg_fix densities[64];
+    mass_lists *l = lists_of(world);
+    const pg_geom **geoms = l->geoms;
+    pg_fix *densities = l->densities;
     int n = 0;
     uint32_t s;
     pg_mass_data md;
@@ -266,7 +284,7 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index)
         densities[n] = world->shapes[s].density;
         ++n;
     }
-    md = pg_compound_mass(geoms, densities, n);
+    md = pg_compound_mass(geoms, densities, n, pg__body_mass_work(world));
     if (md.mass <= 0) { /* only segments, or density 0: a point of 1 kg */
         b->mass = INT64_C(1) << 32;
     } else {

@@ -16,6 +16,7 @@
  *   the pools directly (world_internal.h): flags such as allow_sleep have no getter.
  */
 #include "pogon/scene_file.h"
+#include "mass.h"
 #include "text.h"
 #include "world_internal.h"
 
@@ -883,12 +884,13 @@ static pg_result count_objects(scene_parser *P, uint32_t bodies, uint32_t shapes
 static const char *mass_problem(scene_parser *P, uint32_t n, const pg_geometry *g, pg_fix density, int rotates)
 {
     const pg_geom *geoms[64];
+    uint64_t work[PG__MASS_WORK_BYTES / 8u]; /* no world to lend its scratch when reading */
     uint32_t i;
     if (n >= 64) return NULL; /* refused before: a body has at most 64 shapes */
     pg__shape_build_local(g, &P->mass_geoms[n]);
     P->mass_densities[n] = density;
     for (i = 0; i <= n; ++i) geoms[i] = &P->mass_geoms[i];
-    return pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, (int)n + 1), rotates);
+    return pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, (int)n + 1, work), rotates);
 }
 
 /* "cannot make the <kind>: <why>" as PG_ERR_ENVELOPE at `column` of the current line. */

@@ -79,7 +79,9 @@ static layout compute_layout(const pg_world_def *d)
     PLACE(pshape, sizeof(uint32_t) * d->max_shapes);
     PLACE(pairs, sizeof(pg_pair) * pair_capacity);
     PLACE(bp, pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity));
-    PLACE(solver, pg__solver_scratch_bytes(d));
+    /* between steps the solver scratch is the work space of the mass computations
+     * (body.h), so it is never smaller than that */
+    PLACE(solver, pg__solver_scratch_bytes(d) > pg__body_mass_scratch_bytes() ? pg__solver_scratch_bytes(d) : pg__body_mass_scratch_bytes());
     PLACE(island, sizeof(uint32_t) * d->max_bodies);
     PLACE(begin, sizeof(pg_contact_event) * d->max_contacts);
     PLACE(end, sizeof(pg_contact_event) * d->max_contacts);
