@@ -55,10 +55,12 @@ static const char *check_def(const pg_world_def *d)
 }
 
 typedef struct layout {
-    size_t world, bodies, shapes, contacts, contacts_next, geoms, boxes, flags, pboxes, pflags, pshape, pairs, bp, solver, island, begin, end, total;
+    size_t world, bodies, shapes, contacts, contacts_next, geoms, boxes, flags, pboxes, pflags, pshape, pairs, scratch, island, begin, end, total;
 } layout;
 
 static size_t align8(size_t n) { return (n + 7u) & ~(size_t)7u; }
+
+static size_t max3(size_t a, size_t b, size_t c) { return a > b ? (a > c ? a : c) : (b > c ? b : c); }
 
 static layout compute_layout(const pg_world_def *d)
 {
@@ -78,10 +80,12 @@ static layout compute_layout(const pg_world_def *d)
     PLACE(pflags, d->max_shapes);
     PLACE(pshape, sizeof(uint32_t) * d->max_shapes);
     PLACE(pairs, sizeof(pg_pair) * pair_capacity);
-    PLACE(bp, pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity));
-    /* between steps the solver scratch is the work space of the mass computations
-     * (body.h), so it is never smaller than that */
-    PLACE(solver, pg__solver_scratch_bytes(d) > pg__body_mass_scratch_bytes() ? pg__solver_scratch_bytes(d) : pg__body_mass_scratch_bytes());
+    /* One scratch area for the stages that never hold it at the same time: the
+     * broadphase (its output is the pairs above), then the solver and after it the
+     * islands, and between steps the mass of a body being changed (body.h) or the check
+     * of a snapshot being restored. */
+    PLACE(scratch, max3(pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity), pg__solver_scratch_bytes(d),
+                        pg__body_mass_scratch_bytes()));
     PLACE(island, sizeof(uint32_t) * d->max_bodies);
     PLACE(begin, sizeof(pg_contact_event) * d->max_contacts);
     PLACE(end, sizeof(pg_contact_event) * d->max_contacts);
@@ -130,10 +134,10 @@ pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_s
     w->proxy_shape = (uint32_t *)(void *)(m + l.pshape);
     w->pairs = (pg_pair *)(void *)(m + l.pairs);
     w->pair_capacity = def->max_contacts;
-    w->broadphase_scratch = m + l.bp;
-    w->broadphase_scratch_bytes = l.solver - l.bp;
-    w->solver_scratch = m + l.solver;
-    w->solver_scratch_bytes = l.island - l.solver;
+    w->broadphase_scratch = m + l.scratch;
+    w->broadphase_scratch_bytes = l.island - l.scratch;
+    w->solver_scratch = m + l.scratch; /* the same area: see compute_layout */
+    w->solver_scratch_bytes = l.island - l.scratch;
     w->island_parent = (uint32_t *)(void *)(m + l.island);
     w->begin_events = (pg_contact_event *)(void *)(m + l.begin);
     w->end_events = (pg_contact_event *)(void *)(m + l.end);

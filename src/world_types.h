@@ -38,8 +38,8 @@ struct pg_world {
     uint32_t *proxy_shape;     /* proxy -> shape slot */
     pg_pair *pairs;
     uint32_t pair_capacity;
-    void *broadphase_scratch;
-    size_t broadphase_scratch_bytes;
+    void *broadphase_scratch;  /* the broadphase's and the solver's scratch are one */
+    size_t broadphase_scratch_bytes; /* area (world.c compute_layout): never live at once */
     void *solver_scratch;
     size_t solver_scratch_bytes;
     uint32_t *island_parent;   /* per body slot */
