@@ -7,6 +7,7 @@
 #include "island.h"
 #include "solver.h"
 #include "world_types.h"
+#include "world_internal.h"
 
 /* ---- definition and memory ------------------------------------------------------------ */
 pg_world_def pg_default_world_def(void)
@@ -103,6 +104,25 @@ size_t pg_world_memory_size(const pg_world_def *def)
 {
     if (def == NULL || check_def(def) != NULL) return 0;
     return compute_layout(def).total;
+}
+
+const char *pg__world_memory_part(const pg_world_def *def, unsigned i, size_t *bytes)
+{
+    static const char *const names[] = {"world", "bodies", "shapes", "contacts", "contacts (next step)",
+                                        "world geometries", "boxes", "proxy flags", "proxy boxes",
+                                        "proxy flags (compact)", "proxy shapes", "pairs",
+                                        "scratch (broadphase / solver / mass)", "island parents",
+                                        "begin events", "end events"};
+    layout l;
+    size_t at[sizeof names / sizeof names[0] + 1];
+    *bytes = 0;
+    if (def == NULL || check_def(def) != NULL || i >= sizeof names / sizeof names[0]) return NULL;
+    l = compute_layout(def);
+    at[0] = l.world; at[1] = l.bodies; at[2] = l.shapes; at[3] = l.contacts; at[4] = l.contacts_next;
+    at[5] = l.geoms; at[6] = l.boxes; at[7] = l.flags; at[8] = l.pboxes; at[9] = l.pflags; at[10] = l.pshape;
+    at[11] = l.pairs; at[12] = l.scratch; at[13] = l.island; at[14] = l.begin; at[15] = l.end; at[16] = l.total;
+    *bytes = at[i + 1] - at[i];
+    return names[i];
 }
 
 pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_size, pg_world **out)
