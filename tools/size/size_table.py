@@ -18,7 +18,9 @@ registers) and Cortex-M0+, and measures:
   stack   the deepest call chain below pg_world_step and below each public function,
           from gcc's -fcallgraph-info=su (frame sizes as in the .su files; library
           helpers such as memset and __aeabi_uldivmod count as 0);
-  cost    instructions per pyramid step under qemu -icount shift=0 (step_count.c).
+  cost    instructions per pyramid step under qemu -icount shift=0 (step_count.c), and
+          the calls of libgcc's 64-bit division helpers in those steps (step_count.c
+          with count_divisions.S).
 --write replaces the generated region of the given Markdown file (between
 "<!-- size_table:begin -->" and "<!-- size_table:end -->") with the tables, the date,
 the machine and this command. --check measures the flash only and fails (exit 1) when a
@@ -359,7 +361,7 @@ def kib(n):
     return "%.1f KiB" % (n / 1024.0)
 
 
-def markdown(flash, memory, stack, steps, command):
+def markdown(flash, memory, stack, steps, divisions, command):
     now = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC")
     cpu_model = platform.machine()
     try:
@@ -458,6 +460,12 @@ def markdown(flash, memory, stack, steps, command):
         for cpu in CPUS:
             L.append("| Cortex-%s | %.2f M | %.1f |" % (cpu, steps[cpu][0] / 1e6, steps[cpu][1]))
         L.append("")
+    if divisions:
+        L.append("64-bit division calls per pyramid step (the same steps, step_count.c counting them through "
+                 "tools/size/count_divisions.S): %s." % "; ".join(
+                     "Cortex-%s %.0f (`__aeabi_ldivmod` %.0f, `__aeabi_uldivmod` %.0f)" % (cpu, a + b, a, b)
+                     for cpu, (a, b) in divisions.items()))
+        L.append("")
     return "\n".join(L)
 
 
@@ -524,7 +532,10 @@ def main():
     steps = measure_steps(build)
     for cpu, v in steps.items():
         print("pyramid step %s: %.0f instructions (%.2f per tick)" % (cpu, v[0], v[1]))
-    text = markdown(flash, memory, stack, steps, "tools/size/size_table.py" + (" --write " + args.write if args.write else ""))
+    divisions = measure_divisions(build)
+    for cpu, (a, b) in divisions.items():
+        print("pyramid step %s: %.1f __aeabi_ldivmod, %.1f __aeabi_uldivmod calls" % (cpu, a, b))
+    text = markdown(flash, memory, stack, steps, divisions, "tools/size/size_table.py" + (" --write " + args.write if args.write else ""))
     if args.write:
         write_region(os.path.join(ROOT, args.write) if not os.path.isabs(args.write) else args.write, text)
         print("size_table: wrote %s" % args.write)
