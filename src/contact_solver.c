@@ -109,7 +109,7 @@ static denominator make_denominator(int64_t K)
     if (d.shift > 0) K31 = row_round(K, d.shift);
     else if (d.shift < 0) K31 = K * ((int64_t)1 << -d.shift);
     else K31 = K;
-    d.inv = K31 > 0 ? (int64_t)(((UINT64_C(1) << 62) + (uint64_t)K31 / 2u) / (uint64_t)K31) : 0;
+    d.inv = K31 > 0 ? (int64_t)pg__udiv64_32((UINT64_C(1) << 62) + (uint64_t)K31 / 2u, (uint32_t)K31) : 0; /* K31 < 2^31 */
     return d;
 }
 
@@ -147,7 +147,8 @@ static inline row_den make_row_denominator(int64_t K)
     r.s = s;
     K31 = ((K + r.half) >> s) << l; /* in [2^30, 2^31) for K > 0 */
     r.d.shift = shift;
-    r.d.inv = K31 > 0 ? (int64_t)(((UINT64_C(1) << 62) + (uint64_t)K31 / 2u) / (uint64_t)K31) : 0;
+    /* K31 < 2^31: a division by a 32-bit number, no 64-bit division per row */
+    r.d.inv = K31 > 0 ? (int64_t)pg__udiv64_32((UINT64_C(1) << 62) + (uint64_t)K31 / 2u, (uint32_t)K31) : 0;
     r.inv30 = r.d.inv << l;
     r.inv24 = (r.d.inv >> 8) << l;
     return r;
@@ -174,7 +175,9 @@ static pg_fix k_ratio(denominator t, denominator n)
     int diff = t.shift - n.shift;
     uint64_t r;
     if (t.inv <= 0) return 0;
-    r = (((uint64_t)n.inv << 16) + (uint64_t)t.inv / 2u) / (uint64_t)t.inv; /* in [2^15, 2^17] */
+    r = ((uint64_t)n.inv << 16) + (uint64_t)t.inv / 2u;
+    /* in [2^15, 2^17]; t.inv <= 2^32, which is 2^62 / K31 rounded for K31 = 2^30 only */
+    r = (uint64_t)t.inv <= UINT32_MAX ? pg__udiv64_32(r, (uint32_t)t.inv) : r / (uint64_t)t.inv;
     if (diff >= 15) return PG_FIX_MAX;
     if (diff >= 0) r <<= diff;
     else r = diff <= -40 ? 0 : (r + ((uint64_t)1 << (-diff - 1))) >> -diff;
@@ -335,7 +338,7 @@ static void setup_block(constraint *c)
     c->block = 1;
     c->e01 = (int32_t)e01;
     c->e10 = (int32_t)e10;
-    c->inv_det = (int32_t)(((INT64_C(1) << 54) + det / 2) / det);
+    c->inv_det = (int32_t)pg__udiv64_32((UINT64_C(1) << 54) + (uint64_t)det / 2u, (uint32_t)det); /* det <= 2^31 */
 }
 
 /* What a side that does not move in this step looks like to the rows: no inverse mass,
@@ -1081,8 +1084,16 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
  * total exactly. */
 static void split_central_friction(const constraint *c, pg_contact *ct)
 {
-    int64_t total = c->p[0].tangent_impulse, n0 = c->p[0].normal_impulse, n1 = c->p[1].normal_impulse;
-    int64_t part0 = n0 + n1 > 0 ? pg__div64_shl(total * n0, n0 + n1, 0) : row_round(total, 1);
+    int64_t total = c->p[0].tangent_impulse, n0 = c->p[0].normal_impulse, n1 = c->p[1].normal_impulse, part0;
+    if (n0 + n1 > 0 && n0 + n1 <= (int64_t)UINT32_MAX) {
+        /* pg__div64_shl(total n0, n0 + n1, 0) with a division by a 32-bit number: the same
+         * quotient, rounded the same way (|total n0| <= 2^58, so no clamp applies) */
+        uint64_t un = pg__mag64(total * n0), q = pg__udiv64_32(un, (uint32_t)(n0 + n1)), r = un - q * (uint64_t)(n0 + n1);
+        if (r >= (uint64_t)(n0 + n1) - r) ++q;
+        part0 = total * n0 < 0 ? -(int64_t)q : (int64_t)q;
+    } else {
+        part0 = n0 + n1 > 0 ? pg__div64_shl(total * n0, n0 + n1, 0) : row_round(total, 1);
+    }
     ct->points[0].tangent_impulse = (pg_fix)part0;
     ct->points[1].tangent_impulse = (pg_fix)(total - part0);
 }
