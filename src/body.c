@@ -115,7 +115,7 @@ pg_result pg_body_create(pg_world *world, const pg_body_def *def, pg_body_id *ou
     b->flags = PG_BODY_FLAG_USED | PG_BODY_FLAG_GEOMETRY_DIRTY;
     if (def->fixed_rotation) b->flags |= PG_BODY_FLAG_FIXED_ROTATION;
     if (def->allow_sleep) b->flags |= PG_BODY_FLAG_ALLOW_SLEEP;
-    if (def->awake || def->type == PG_BODY_KINEMATIC || (world->def.effects & PG_EFFECT_SLEEPING) == 0) b->flags |= PG_BODY_FLAG_AWAKE;
+    if (def->awake || def->type == PG_BODY_KINEMATIC || (world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) == 0) b->flags |= PG_BODY_FLAG_AWAKE;
     b->type = def->type;
     b->origin = def->position;
     b->center = def->position;
@@ -304,7 +304,7 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
     int turning;
     pg_fix margin = PG_SPECULATIVE_DISTANCE;
     pg_fix sweep_x = 0, sweep_y = 0;
-    if (b->type != PG_BODY_STATIC && (world->def.effects & PG_EFFECT_CONTINUOUS) != 0) {
+    if (b->type != PG_BODY_STATIC && (world->def.effects & PG__EFFECT(PG_EFFECT_CONTINUOUS)) != 0) {
         /* A fast body's box grows by the distance it may travel in this step, so the
          * speculative contacts can stop it at a surface instead of letting it tunnel. */
         pg_fix dx = (pg_fix)(pg_fix_abs(b->v.x) / (int32_t)world->def.step_hz);
@@ -458,7 +458,7 @@ pg_result pg_body_set_awake(pg_world *world, pg_body_id id, int awake)
     if (b->type == PG_BODY_STATIC) return PG_OK;
     if (awake) {
         pg__wake_body(world, id.index);
-    } else if ((world->def.effects & PG_EFFECT_SLEEPING) != 0 && b->type == PG_BODY_DYNAMIC) {
+    } else if ((world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) != 0 && b->type == PG_BODY_DYNAMIC) {
         b->flags = (b->flags & ~(uint32_t)PG_BODY_FLAG_AWAKE) | PG_BODY_FLAG_GEOMETRY_DIRTY;
         b->v = pg_v2_zero();
         b->w = 0;

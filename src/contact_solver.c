@@ -358,7 +358,7 @@ static int centred_circle(const pg_world *w, uint32_t shape, uint32_t body)
 PG__INLINE_ROW void prepare_point_rows(const step_context *ctx, constraint *c, const pg_body *A, const pg_body *B, int normal_turns,
                                        int tangent_turns)
 {
-    const int friction = (ctx->effects & PG_EFFECT_FRICTION) != 0;
+    const int friction = (ctx->effects & PG__EFFECT(PG_EFFECT_FRICTION)) != 0;
     const pg_fix mu = friction ? ctx->world->contacts[c->contact].friction : 0;
     pg_dir t;
     denominator dt = { 0, 0 };
@@ -744,7 +744,7 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, const softness *s
      * which carries less than the load until the contact has sunk to the soft spring's
      * resting depth; in Q16.16 it may never get there (the last of the sinking moves a
      * body less than half a position step per substep), and friction would be weak. */
-    if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
+    if ((ctx->effects & PG__EFFECT(PG_EFFECT_FRICTION)) != 0) {
         /* one row: a single point's, or a face contact's central row (CENTRAL FRICTION:
          * with friction on, every two-point manifold has one), bounded by both points */
         int64_t bound = friction_bound(&c->p[0]);
@@ -978,7 +978,7 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
     if (!c->round_a) bodies[c->a].turns_anchors = 1;
     if (!c->round_b) bodies[c->b].turns_anchors = 1;
     c->normal_linear = 1;
-    c->restitution = (effects & PG_EFFECT_RESTITUTION) != 0 ? ct->restitution : 0;
+    c->restitution = (effects & PG__EFFECT(PG_EFFECT_RESTITUTION)) != 0 ? ct->restitution : 0;
     c->deep = 0; /* deep_push is set by every soft pass (set_push) before it is read */
     /* No torque about a round side's centre, and none on a side that cannot turn in this
      * step (its angular velocity is 0 and its inverse inertia too). */
@@ -1019,7 +1019,7 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
         p->cnB = turnB ? pg__sat64(p->xrB) : 0;
         if (p->cnA != 0 || p->cnB != 0) c->normal_linear = 0;
         p->normal_impulse = (pg_fix)clamp_lambda(cp->normal_impulse, 0, LAMBDA_MAX);
-        p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
+        p->tangent_impulse = (effects & PG__EFFECT(PG_EFFECT_FRICTION)) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
         p->max_normal_impulse = 0;
         if (p->normal_impulse != 0 || p->tangent_impulse != 0) held = 1;
         p->relative_velocity = 0; /* set before the point first pushes (APPROACH) */
@@ -1038,7 +1038,7 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
     }
     /* CENTRAL FRICTION: the row's lever arms are those of the mean anchor (r x t is linear
      * in r), and its lambda is what the two points stored */
-    c->central_friction = c->count == 2 && (effects & PG_EFFECT_FRICTION) != 0;
+    c->central_friction = c->count == 2 && (effects & PG__EFFECT(PG_EFFECT_FRICTION)) != 0;
     if (c->central_friction) {
         constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
         p0->ctA = (pg_fix)row_round((int64_t)p0->ctA + p1->ctA, 1);
@@ -1201,7 +1201,7 @@ void pg__contacts_relax(const pg_contact_stage *s, const step_context *ctx_in, s
 void pg__contacts_restitution(const pg_contact_stage *s, const step_context *ctx, solver_body *bodies)
 {
     uint32_t i;
-    if ((ctx->effects & PG_EFFECT_RESTITUTION) == 0) return;
+    if ((ctx->effects & PG__EFFECT(PG_EFFECT_RESTITUTION)) == 0) return;
     for (i = 0; i < s->count; ++i) restitution(&s->cons[i], bodies, ctx->world->def.restitution_threshold, ctx->h_q32 / 2);
 }
 

@@ -824,7 +824,7 @@ static void apply_awake(pg_world *world, pg_body_id id, int awake)
         b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
         return;
     }
-    if ((world->def.effects & PG_EFFECT_SLEEPING) == 0) return; /* nothing sleeps without sleeping */
+    if ((world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) == 0) return; /* nothing sleeps without sleeping */
     b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
     b->v = pg_v2_zero();
     b->w = 0;

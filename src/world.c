@@ -10,13 +10,16 @@
 #include "world_internal.h"
 
 /* ---- definition and memory ------------------------------------------------------------ */
+/* An effect this build was compiled without (pogon/config.h) cannot be turned on. */
+#define LEFT_OUT_EFFECT "effects has an effect this build leaves out (PG_CONFIG_EFFECTS in pogon/config.h): build the library with it, or clear its PG_EFFECT_* bit"
+
 pg_world_def pg_default_world_def(void)
 {
     pg_world_def d;
     d.gravity = pg_v2(0, PG_FIX_C(-10));
     d.step_hz = 60;
     d.substeps = 4;
-    d.effects = PG_EFFECTS_ALL;
+    d.effects = PG_EFFECTS_ALL & PG_CONFIG_EFFECTS; /* what this build has */
     d.contact_hertz = PG_FIX_C(30);
     d.contact_damping_ratio = PG_FIX_C(10);
     d.contact_push_max = PG_FIX_C(3);
@@ -41,6 +44,7 @@ static const char *check_def(const pg_world_def *d)
     if (d->step_hz < 1 || d->step_hz > 1000) return "step_hz must be 1..1000";
     if (d->substeps < 1 || d->substeps > 16) return "substeps must be 1..16";
     if ((d->effects & ~PG_EFFECTS_ALL) != 0) return "effects has bits that are not PG_EFFECT_*";
+    if ((d->effects & ~PG_CONFIG_EFFECTS) != 0) return LEFT_OUT_EFFECT;
     if (d->max_bodies < 1 || d->max_bodies > PG_MAX_CAPACITY) return "max_bodies must be 1..2^24";
     if (d->max_shapes < 1 || d->max_shapes > PG_MAX_CAPACITY) return "max_shapes must be 1..2^24";
     if (d->max_contacts < 1 || d->max_contacts > PG_MAX_CAPACITY) return "max_contacts must be 1..2^24";
@@ -186,7 +190,8 @@ pg_result pg_world_set_effects(pg_world *world, uint32_t effects)
     uint32_t i;
     if (world == NULL) return PG_ERR_NULL;
     if ((effects & ~PG_EFFECTS_ALL) != 0) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "effects has bits that are not PG_EFFECT_*");
-    if ((world->def.effects & PG_EFFECT_SLEEPING) != 0 && (effects & PG_EFFECT_SLEEPING) == 0) {
+    if ((effects & ~PG_CONFIG_EFFECTS) != 0) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, LEFT_OUT_EFFECT);
+    if ((world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) != 0 && (effects & PG__EFFECT(PG_EFFECT_SLEEPING)) == 0) {
         for (i = 0; i < world->body_high; ++i) /* without sleeping, nothing may stay asleep */
             if ((world->bodies[i].flags & PG_BODY_FLAG_USED) != 0 && world->bodies[i].type != PG_BODY_STATIC) {
                 world->bodies[i].flags |= PG_BODY_FLAG_AWAKE;
@@ -262,7 +267,7 @@ pg_result pg_world_step(pg_world *world)
     /* 3. forces, solver, integration */
     pg__solve(world);
     /* 4. islands and sleep */
-    if ((world->def.effects & PG_EFFECT_SLEEPING) != 0) pg__update_sleep(world);
+    if ((world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) != 0) pg__update_sleep(world);
     world->frame += 1u;
     return PG_OK;
 }

@@ -16,6 +16,12 @@
 #include "geom.h"
 #include "shape_types.h"
 
+/* An effect bit as the step tests it: 0 when the build leaves the effect out
+ * (PG_CONFIG_EFFECTS, pogon/config.h), so the test folds to a constant and the effect's
+ * code drops out of the program. A world's effects never hold such a bit (world.c
+ * refuses it), so in a build that keeps the effect nothing changes. */
+#define PG__EFFECT(bit) ((uint32_t)(bit) & (uint32_t)(PG_CONFIG_EFFECTS))
+
 struct pg_world {
     pg_world_def def;
     uint64_t frame;

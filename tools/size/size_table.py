@@ -52,14 +52,16 @@ COMMON = ["-mthumb", "-mgeneral-regs-only", "-Os", "-std=c99", "-ffunction-secti
 LINK = ["-Wl,--gc-sections", "-nostartfiles", "--specs=nano.specs"]
 FILE_FORMATS = ("scene_file.c", "replay_file.c")
 # The issue's budgets (issue 30), KiB of flash; the core module has none of its own.
-BUDGETS = {"step-only": 16, "core-module": None, "core": 32, "everything": 64}
+BUDGETS = {"step-only": 16, "step-only-lean": 16, "core-module": None, "core": 32, "everything": 64}
 CONFIG_TEXT = {
     "step-only": "step-only circles and boxes",
+    "step-only-lean": "step-only circles and boxes, without sleeping and continuous collision (`PG_CONFIG_EFFECTS=0x1F`)",
     "core-module": "`pogon::core`: every public function of the core module",
     "core": "core without file formats (core, state, commands)",
     "everything": "everything",
 }
-CONFIGS = ("step-only", "core-module", "core", "everything")
+CONFIGS = ("step-only", "step-only-lean", "core-module", "core", "everything")
+LEAN = ["-DPG_CONFIG_EFFECTS=0x1Fu"]  # the library of step-only-lean
 GROWTH = 1.02
 
 
@@ -92,11 +94,11 @@ def public_api():
     return names
 
 
-def compile_all(build, cpu, jobs):
+def compile_all(build, cpu, jobs, extra=(), variant=""):
     """Objects of the library for one CPU, with their .su and .ci files beside them."""
-    out = os.path.join(build, cpu.replace("+", "plus"))
+    out = os.path.join(build, cpu.replace("+", "plus") + variant)
     os.makedirs(out, exist_ok=True)
-    flags = CPUS[cpu][0] + COMMON + ["-fstack-usage", "-fcallgraph-info=su"]
+    flags = CPUS[cpu][0] + COMMON + list(extra) + ["-fstack-usage", "-fcallgraph-info=su"]
 
     def one(src):
         obj = os.path.join(out, os.path.basename(src)[:-2] + ".o")
@@ -185,6 +187,10 @@ def measure_flash(build, jobs):
         for name, (src, keep) in configs.items():
             elf = link_config(out, cpu, lib, src, keep, name)
             result[(name, cpu)] = (flash_of(elf) - base, holders(elf[:-4] + ".map"))
+        lean_out, lean_objects = compile_all(build, cpu, jobs, LEAN, "-lean")
+        lean_lib = archive(lean_out, lean_objects)
+        elf = link_config(lean_out, cpu, lean_lib, os.path.join(HERE, "step_only.c"), [], "step-only-lean")
+        result[("step-only-lean", cpu)] = (flash_of(elf) - base, holders(elf[:-4] + ".map"))
     return result
 
 
