@@ -55,11 +55,12 @@
  *     (count >= 3) is ignored: the mass is that of the bare polygon. A geometry with
  *     count outside 1..PG_MAX_POLYGON_VERTICES, or a NULL entry, is skipped.
  *   - Cost: set-up time, not for inner loops. A single shape takes microseconds; eight
- *     mutually overlapping octagons (255 nonempty intersections) about 10 ms on a
- *     desktop x86-64 (the subset search recomputes each subset's intersection from
- *     its polygons rather than keep one clipped polygon per depth). Memory: the caller's
- *     work space of pg__mass_work_bytes() (6144 bytes) and about 2 KB of stack; no
- *     recursion, no heap.
+ *     mutually overlapping octagons (255 nonempty intersections) a few tens of
+ *     milliseconds on a desktop x86-64, because the subset search recomputes each
+ *     subset's intersection from its polygons: it keeps the subset's indices, not one
+ *     clipped polygon per depth, so that its memory is small. Memory: the caller's work
+ *     space of pg__mass_work_bytes() (6144 bytes) and a few KB of stack (the stack
+ *     table of docs/embedded.md); no recursion, no heap.
  *   - Without mass (density 0) the centre is the centroid of the area; without area too
  *     (segments, points, degenerate polygons) it is the mean of the geometries' vertex
  *     averages (the midpoint of a segment). Mass and inertia are then 0.
