@@ -170,7 +170,6 @@ void pg__distance_joint_prepare(joint_constraint *c, const step_context *ctx)
         d = pg_dir_normalize(dx, dy);
     }
     pg__joint_row_linear(&c->axial, &c->A, &c->B, d, c->A.lever, c->B.lever);
-    c->soft = pg__joint_rigid_softness(ctx->n);
     c->axial_imp = j->axial_impulse;
     if (has_spring(j)) { /* spring coefficients: h omega^2 (Q16 1/s) and 2 zeta omega h (Q30) */
         int64_t hz = j->hertz < (pg_fix)((int64_t)ctx->n * 16384) ? j->hertz : (pg_fix)((int64_t)ctx->n * 16384);
@@ -186,7 +185,7 @@ void pg__distance_joint_prepare(joint_constraint *c, const step_context *ctx)
 static int64_t orient(joint_constraint *c, const solver_body *bodies)
 {
     int64_t ax, ay, bx, by, dx, dy, len;
-    joint_levers_now(c, bodies);
+    (void)joint_levers_now(c, bodies); /* the direction moves with the centres too: oriented every pass */
     joint_anchor_now(&c->A, bodies, &ax, &ay);
     joint_anchor_now(&c->B, bodies, &bx, &by);
     dx = clamp64(bx - ax, INT32_MAX);

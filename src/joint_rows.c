@@ -18,6 +18,7 @@ void pg__joint_side_init(joint_side *s, const pg_world *w, uint32_t body, pg_vec
     s->local = pg_v2(pg__sat64((int64_t)anchor.x - b->local_center.x), pg__sat64((int64_t)anchor.y - b->local_center.y));
     s->lever = pg_rot_apply(b->rot, s->local);
     s->lever_now = s->lever;
+    s->dq_seen = pg_rot_identity();
     s->fixed_point = pg_v2_add(b->center, s->lever);
     s->fixed_angle = b->angle;
 }

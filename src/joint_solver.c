@@ -15,6 +15,7 @@ size_t pg__joint_constraint_bytes(uint32_t max_joints) { return sizeof(joint_con
 void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body *bodies, void *area)
 {
     const pg_world *w = ctx->world;
+    const softness rigid = pg__joint_rigid_softness(ctx->n); /* the same for every joint of the step */
     uint32_t i;
     s->cons = (joint_constraint *)area;
     s->count = 0;
@@ -35,7 +36,8 @@ void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body 
             c->A.slot = ctx->dummy;
             c->A.active = 0;
             c->A.inv_mass = c->A.inv_inertia = 0;
-            c->A.local = c->A.lever = c->A.fixed_point = pg_v2_zero();
+            c->A.local = c->A.lever = c->A.lever_now = c->A.fixed_point = pg_v2_zero();
+            c->A.dq_seen = pg_rot_identity();
             c->A.fixed_angle = 0;
         }
         pg__joint_side_init(&c->B, w, j->body_b, j->anchor_b, activeB, activeB ? j->body_b : ctx->dummy, ctx->rotation);
@@ -43,6 +45,7 @@ void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body 
         if (activeA) bodies[c->A.slot].turns_anchors = 1;
         if (activeB) bodies[c->B.slot].turns_anchors = 1;
         c->imp[0] = c->imp[1] = c->axial_imp = c->lower_imp = c->upper_imp = c->motor_imp = c->motor_max = 0;
+        c->soft = c->soft2 = rigid; /* a kind with a spring sets its own */
         switch (j->type) {
         case PG_JOINT_DISTANCE: pg__distance_joint_prepare(c, ctx); break;
         case PG_JOINT_REVOLUTE: pg__revolute_joint_prepare(c, ctx); break;
@@ -140,10 +143,12 @@ pg_result pg_joint_get_reaction(const pg_world *world, pg_joint_id id, pg_joint_
         c.A.slot = ctx.dummy;
         c.A.active = 0;
         c.A.inv_mass = c.A.inv_inertia = 0;
-        c.A.local = c.A.lever = c.A.fixed_point = pg_v2_zero();
+        c.A.local = c.A.lever = c.A.lever_now = c.A.fixed_point = pg_v2_zero();
+        c.A.dq_seen = pg_rot_identity();
         c.A.fixed_angle = 0;
     }
     pg__joint_side_init(&c.B, world, j->body_b, j->anchor_b, world->bodies[j->body_b].type == PG_BODY_DYNAMIC, j->body_b, ctx.rotation);
+    c.soft = c.soft2 = pg__joint_rigid_softness(ctx.n);
     switch (j->type) {
     case PG_JOINT_DISTANCE: pg__distance_joint_prepare(&c, &ctx); pg__distance_joint_impulse(&c, p); break;
     case PG_JOINT_REVOLUTE: pg__revolute_joint_prepare(&c, &ctx); pg__revolute_joint_impulse(&c, p); break;

@@ -170,7 +170,6 @@ void pg__prismatic_joint_prepare(joint_constraint *c, const step_context *ctx)
     pg__joint_row_linear(&c->axial, &c->A, &c->B, d, reach, c->B.lever);
     pg__joint_row_linear(&c->perp, &c->A, &c->B, n, reach, c->B.lever);
     pg__joint_row_angular(&c->angular, &c->A, &c->B);
-    c->soft = pg__joint_rigid_softness(ctx->n);
     c->imp[0] = j->point_impulse[0];
     c->axial_imp = j->axial_impulse;
     c->motor_imp = has_motor(j) ? j->motor_impulse : 0;
@@ -188,7 +187,7 @@ static void orient(joint_constraint *c, const solver_body *bodies, int64_t *alon
     int64_t ax, ay, bx, by, dx, dy;
     pg_vec2 axis, reach;
     pg_dir d, n;
-    joint_levers_now(c, bodies);
+    (void)joint_levers_now(c, bodies); /* the direction moves with the centres too: oriented every pass */
     axis = c->A.active ? pg_rot_apply(bodies[c->A.slot].dq, c->axis0) : c->axis0; /* Q16.16 unit */
     d = pg_dir_normalize(axis.x, axis.y);
     n.x = -d.y;
