@@ -150,7 +150,8 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
     if (c->point.S == 0) return;
     if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
-    if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
+    if (c->angular.on && (c->motor_imp | c->lower_imp | c->upper_imp) != 0) /* a row of lambda 0 changes nothing */
+        joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_store(&bodies[c->A.slot], &A, c->A.active);
     joint_store(&bodies[c->B.slot], &B, c->B.active);
 }
@@ -159,7 +160,7 @@ void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const st
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
-    int64_t ax, ay, bx, by;
+    int64_t ax = 0, ay = 0, bx = 0, by = 0;
     if (c->point.S == 0) return;
     if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     if (has_motor(j)) joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
@@ -169,8 +170,10 @@ void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const st
         joint_limit_solve(&c->angular, &c->lower_imp, &A, &B, angle - j->lower, 1, &c->soft, use_bias, ctx->n);
         joint_limit_solve(&c->angular, &c->upper_imp, &A, &B, angle - j->upper, -1, &c->soft, use_bias, ctx->n);
     }
-    joint_anchor_now(&c->A, bodies, &ax, &ay);
-    joint_anchor_now(&c->B, bodies, &bx, &by);
+    if (use_bias) { /* a relax sweep has no bias: the point's position error is not read */
+        joint_anchor_now(&c->A, bodies, &ax, &ay);
+        joint_anchor_now(&c->B, bodies, &bx, &by);
+    }
     joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
     joint_store(&bodies[c->A.slot], &A, c->A.active);
     joint_store(&bodies[c->B.slot], &B, c->B.active);

@@ -117,15 +117,17 @@ void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_c
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
-    int64_t ax, ay, bx, by;
+    int64_t ax = 0, ay = 0, bx = 0, by = 0;
     pg_angle rel;
     (void)ctx;
     if (c->point.S == 0) return;
     if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
     if (use_bias || j->hertz2 == 0) joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(rel), &c->soft2, use_bias);
-    joint_anchor_now(&c->A, bodies, &ax, &ay);
-    joint_anchor_now(&c->B, bodies, &bx, &by);
+    if (use_bias) { /* a relax sweep has no bias: the point's position error is not read */
+        joint_anchor_now(&c->A, bodies, &ax, &ay);
+        joint_anchor_now(&c->B, bodies, &bx, &by);
+    }
     if (use_bias || j->hertz == 0) joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
     joint_store(&bodies[c->A.slot], &A, c->A.active);
     joint_store(&bodies[c->B.slot], &B, c->B.active);
