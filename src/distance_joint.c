@@ -181,8 +181,8 @@ void pg__distance_joint_prepare(joint_constraint *c, const step_context *ctx)
     c->upper_imp = has_limit(j) ? j->upper_impulse : 0;
 }
 
-/* The rod's direction and the levers where the bodies are now; returns the length. */
-static int64_t orient(joint_constraint *c, const solver_body *bodies)
+/* The rod's direction, the levers and the length (c->along) where the bodies are now. */
+static void orient(joint_constraint *c, const solver_body *bodies)
 {
     int64_t ax, ay, bx, by, dx, dy, len;
     (void)joint_levers_now(c, bodies); /* the direction moves with the centres too: oriented every pass */
@@ -192,7 +192,7 @@ static int64_t orient(joint_constraint *c, const solver_body *bodies)
     dy = clamp64(by - ay, INT32_MAX);
     len = (int64_t)pg__sqrt_nearest((uint64_t)(dx * dx + dy * dy));
     pg__joint_row_orient(&c->axial, len * 2 >= LENGTH_MIN ? pg_dir_normalize(dx, dy) : c->axial.d, c->A.lever_now, c->B.lever_now);
-    return len;
+    c->along = len;
 }
 
 void pg__distance_joint_warm_start(joint_constraint *c, solver_body *bodies)
@@ -206,13 +206,14 @@ void pg__distance_joint_warm_start(joint_constraint *c, solver_body *bodies)
     joint_store(&bodies[c->B.slot], &B, c->B.active);
 }
 
-void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     int64_t len;
     if (!c->axial.on) return;
-    len = orient(c, bodies);
+    if (moved) orient(c, bodies);
+    len = c->along;
     if (!has_spring(j)) {
         joint_row_solve(&c->axial, &c->axial_imp, &A, &B, len - j->length, &c->soft, use_bias);
     } else if (use_bias) { /* the spring: once a substep */

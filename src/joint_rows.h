@@ -64,6 +64,9 @@ typedef struct joint_constraint {
     int64_t spring_k;      /* distance spring: h omega^2, Q16 1/s */
     int64_t spring_c;      /* distance spring: 2 zeta omega h, Q2.30 */
     pg_vec2 axis0;         /* prismatic: the axis in A's frame at the step's start (world) */
+    int64_t along, across; /* distance: the length now (along); prismatic: the translation
+                              along the axis and the offset across it; made where the rows are
+                              oriented, when the bodies moved */
 } joint_constraint;
 
 /* ---- set-up (joint_rows.c) ---- */

@@ -71,22 +71,26 @@ void pg__joints_warm_start(const pg_joint_stage *s, solver_body *bodies)
     }
 }
 
-static void pass(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies, int use_bias)
+/* A pass over the joints. `moved`: the bodies may have moved since the joints' last
+ * visit, so the rows that follow them (levers, directions, position errors) are made
+ * again; positions change only when they are integrated, between the solve pass and the
+ * first relax sweep, and the warm start before the solve pass orients every joint. */
+static void pass(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies, int use_bias, int moved)
 {
     uint32_t i;
     for (i = 0; i < s->count; ++i) {
         joint_constraint *c = &s->cons[i];
         switch (c->src->type) {
-        case PG_JOINT_DISTANCE: pg__distance_joint_solve(c, bodies, ctx, use_bias); break;
-        case PG_JOINT_REVOLUTE: pg__revolute_joint_solve(c, bodies, ctx, use_bias); break;
-        case PG_JOINT_WELD: pg__weld_joint_solve(c, bodies, ctx, use_bias); break;
-        case PG_JOINT_PRISMATIC: pg__prismatic_joint_solve(c, bodies, ctx, use_bias); break;
-        default: pg__mouse_joint_solve(c, bodies, ctx, use_bias); break;
+        case PG_JOINT_DISTANCE: pg__distance_joint_solve(c, bodies, ctx, use_bias, moved); break;
+        case PG_JOINT_REVOLUTE: pg__revolute_joint_solve(c, bodies, ctx, use_bias, moved); break;
+        case PG_JOINT_WELD: pg__weld_joint_solve(c, bodies, ctx, use_bias, moved); break;
+        case PG_JOINT_PRISMATIC: pg__prismatic_joint_solve(c, bodies, ctx, use_bias, moved); break;
+        default: pg__mouse_joint_solve(c, bodies, ctx, use_bias, moved); break;
         }
     }
 }
 
-void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies) { pass(s, ctx, bodies, 1); }
+void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies) { pass(s, ctx, bodies, 1, 0); }
 /* The relax stage sweeps the joints' rigid rows JOINT_RELAX_ITERATIONS times (springs
  * and soft parts act in the solve pass only). Gauss-Seidel carries a change one joint a
  * sweep, so after one sweep a long structure's relative velocities are far from
@@ -98,7 +102,7 @@ void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_b
 void pg__joints_relax(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies)
 {
     int k;
-    for (k = 0; k < JOINT_RELAX_ITERATIONS; ++k) pass(s, ctx, bodies, 0);
+    for (k = 0; k < JOINT_RELAX_ITERATIONS; ++k) pass(s, ctx, bodies, 0, k == 0);
 }
 
 void pg__joints_store(const pg_joint_stage *s, pg_world *w)

@@ -113,7 +113,7 @@ void pg__weld_joint_warm_start(joint_constraint *c, solver_body *bodies)
     joint_store(&bodies[c->B.slot], &B, c->B.active);
 }
 
-void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
@@ -121,7 +121,7 @@ void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_c
     pg_angle rel;
     (void)ctx;
     if (c->point.S == 0) return;
-    if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
+    if (moved && joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
     if (use_bias || j->hertz2 == 0) joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(rel), &c->soft2, use_bias);
     if (use_bias) { /* a relax sweep has no bias: the point's position error is not read */
