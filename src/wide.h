@@ -4,6 +4,7 @@
 #ifndef POGON_SRC_WIDE_H
 #define POGON_SRC_WIDE_H
 #include "intmath.h"
+#include "pogon/config.h" /* PG_FAST_DIV64 */
 
 typedef struct pg_u128 { uint64_t hi, lo; } pg_u128;
 
@@ -49,9 +50,10 @@ static inline int64_t pg__mul64_shr(int64_t a, int64_t b, int shift)
 
 /* round(num * 2^shift / den) by long division, saturated to +-INT64_MAX (a quotient
  * of 2^63 or more); den == 0 saturates by the sign of num (0 for 0). 0 <= shift <= 64.
- * The division takes as many quotient bits at a time as the remainder has room for
- * (64 less den's bit length: one hardware division per 24 bits for a Q38 mass), so it
- * is cheap for a small den and bit-serial only for one near 2^63. */
+ * With a hardware 64-bit divider (PG_FAST_DIV64) it takes as many quotient bits per
+ * division as the remainder has room for, 64 less den's bit length (24 for a Q38 mass);
+ * for a den within 2^8 of 2^63, or without the divider, one bit a turn by compare and
+ * subtract. Both ways give the same bits. */
 static inline int64_t pg__div64_shl(int64_t num, int64_t den, int shift)
 {
     int negative = (num < 0) != (den < 0), room, k;
@@ -60,7 +62,17 @@ static inline int64_t pg__div64_shl(int64_t num, int64_t den, int shift)
     q = un / ud;
     r = un % ud;
     room = 64 - pg__bit_length64(ud); /* r < ud, so r << room fits */
-    if (room < 1) room = 1;           /* ud = 2^63: r < 2^63 still leaves one bit */
+#if !PG_FAST_DIV64
+    room = 0;
+#endif
+    if (room < 8) {
+        for (; shift > 0; --shift) {
+            if (q >> 62) return negative ? -INT64_MAX : INT64_MAX;
+            q <<= 1;
+            r <<= 1; /* r < ud <= 2^63 */
+            if (r >= ud) { q |= 1u; r -= ud; }
+        }
+    }
     while (shift > 0) {
         k = shift < room ? shift : room;
         if (q >> (63 - k)) return negative ? -INT64_MAX : INT64_MAX; /* q << k would reach 2^63 */

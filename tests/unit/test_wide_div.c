@@ -3,7 +3,8 @@
  * away from zero, saturated to +-INT64_MAX when the quotient reaches 2^63, exactly as
  * an __int128 reference computes it. The cases cover denominators of every bit length
  * (the quotient bits per hardware division depend on it), 2^63's magnitude, shifts 0..64
- * and the saturation edge. */
+ * and the saturation edge; test_wide_div_serial builds it with PG_FAST_DIV64=0 (one bit a
+ * turn, for targets without a 64-bit divider). */
 #include "pg_test.h"
 
 #include "wide.h"
