@@ -39,7 +39,7 @@ static pg_u128 sub_u128(pg_u128 a, pg_u128 b)
 /* 1 / det for det >= 2^60 (the determinant of K' >= I in Q60), as a mantissa and a
  * shift: num 2^60 / det is then mul64_shr(num, recip, shift). One division of det's top
  * 40 bits (truncated: 2^-39 relative) makes the three entries of K'^-1, each within
- * 0.51 of a Q30 unit of the exact quotient. */
+ * 0.5 + 2^30 2^-39 < 0.51 of a Q30 unit of the exact quotient (|entries| <= 2^30). */
 typedef struct det_reciprocal { int64_t recip; int shift; } det_reciprocal;
 
 static det_reciprocal reciprocal_of_det(pg_u128 det)
