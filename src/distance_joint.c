@@ -170,7 +170,6 @@ void pg__distance_joint_prepare(joint_constraint *c, const step_context *ctx)
         d = pg_dir_normalize(dx, dy);
     }
     pg__joint_row_linear(&c->axial, &c->A, &c->B, d, c->A.lever, c->B.lever);
-    c->soft = pg__joint_rigid_softness(ctx->n);
     c->axial_imp = j->axial_impulse;
     if (has_spring(j)) { /* spring coefficients: h omega^2 (Q16 1/s) and 2 zeta omega h (Q30) */
         int64_t hz = j->hertz < (pg_fix)((int64_t)ctx->n * 16384) ? j->hertz : (pg_fix)((int64_t)ctx->n * 16384);
@@ -182,18 +181,18 @@ void pg__distance_joint_prepare(joint_constraint *c, const step_context *ctx)
     c->upper_imp = has_limit(j) ? j->upper_impulse : 0;
 }
 
-/* The rod's direction and the levers where the bodies are now; returns the length. */
-static int64_t orient(joint_constraint *c, const solver_body *bodies)
+/* The rod's direction, the levers and the length (c->along) where the bodies are now. */
+static void orient(joint_constraint *c, const solver_body *bodies)
 {
     int64_t ax, ay, bx, by, dx, dy, len;
-    joint_levers_now(c, bodies);
+    (void)joint_levers_now(c, bodies); /* the direction moves with the centres too: oriented every pass */
     joint_anchor_now(&c->A, bodies, &ax, &ay);
     joint_anchor_now(&c->B, bodies, &bx, &by);
     dx = clamp64(bx - ax, INT32_MAX);
     dy = clamp64(by - ay, INT32_MAX);
     len = (int64_t)pg__sqrt_nearest((uint64_t)(dx * dx + dy * dy));
     pg__joint_row_orient(&c->axial, len * 2 >= LENGTH_MIN ? pg_dir_normalize(dx, dy) : c->axial.d, c->A.lever_now, c->B.lever_now);
-    return len;
+    c->along = len;
 }
 
 void pg__distance_joint_warm_start(joint_constraint *c, solver_body *bodies)
@@ -207,13 +206,14 @@ void pg__distance_joint_warm_start(joint_constraint *c, solver_body *bodies)
     joint_store(bodies, &c->B, &B);
 }
 
-void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     int64_t len;
     if (!c->axial.on) return;
-    len = orient(c, bodies);
+    if (moved) orient(c, bodies);
+    len = c->along;
     if (!has_spring(j)) {
         pg__joint_row_solve(&c->axial, &c->axial_imp, &A, &B, len - j->length, &c->soft, use_bias);
     } else if (use_bias) { /* the spring: once a substep */

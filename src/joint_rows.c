@@ -19,6 +19,7 @@ void pg__joint_side_init(joint_side *s, const pg_world *w, uint32_t body, pg_vec
     s->local = pg_v2(pg__sat64((int64_t)anchor.x - b->local_center.x), pg__sat64((int64_t)anchor.y - b->local_center.y));
     s->lever = pg_rot_apply(b->rot, s->local);
     s->lever_now = s->lever;
+    s->dq_seen = pg_rot_identity();
     s->fixed_point = pg_v2_add(b->center, s->lever);
     s->fixed_angle = b->angle;
 }
@@ -36,22 +37,31 @@ static pg_u128 sub_u128(pg_u128 a, pg_u128 b)
     return r;
 }
 
-/* round(num 2^60 / den) for den >= 2^60 (a determinant of K' >= I in Q60): |result| <= 2^30 here */
-static int32_t over_det(int64_t num, pg_u128 den)
+/* 1 / det for det >= 2^60 (the determinant of K' >= I in Q60), as a mantissa and a
+ * shift: num 2^60 / det is then mul64_shr(num, recip, shift). One division of det's top
+ * 40 bits (truncated: 2^-39 relative) makes the three entries of K'^-1, each within
+ * 0.5 + 2^30 2^-39 < 0.51 of a Q30 unit of the exact quotient (|entries| <= 2^30). */
+typedef struct det_reciprocal { int64_t recip; int shift; } det_reciprocal;
+
+static det_reciprocal reciprocal_of_det(pg_u128 det)
 {
-    int bits = den.hi != 0 ? 64 + pg__bit_length64(den.hi) : pg__bit_length64(den.lo);
-    int s = bits > 62 ? bits - 62 : 0;
-    uint64_t d = s == 0 ? den.lo : s >= 64 ? den.hi >> (s - 64) : (den.lo >> s) | (den.hi << (64 - s));
-    if (s <= 60) return sat32(pg__div64_shl(num, (int64_t)d, 60 - s));
-    return sat32(pg__div64_shl(pg__round_shift64(num, s - 60), (int64_t)d, 0));
+    det_reciprocal r;
+    int bits = det.hi != 0 ? 64 + pg__bit_length64(det.hi) : pg__bit_length64(det.lo); /* >= 61 */
+    int s = bits - 40;                                                                    /* 21..84 */
+    uint64_t d = s >= 64 ? det.hi >> (s - 64) : (det.lo >> s) | (det.hi << (64 - s));  /* [2^39, 2^40) */
+    r.recip = pg__div64_shl(INT64_C(1) << 40, (int64_t)d, 61); /* round(2^101 / d), (2^61, 2^62] */
+    r.shift = 41 + s;                                           /* 2^60 / det = recip / 2^(41 + s) */
+    return r;
 }
+
+static int32_t over_det(int64_t num, det_reciprocal r) { return sat32(pg__mul64_shr(num, r.recip, r.shift)); }
 
 void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side *B)
 {
     int64_t S = add_sat(A->inv_mass, B->inv_mass), ia = per_s(A->inv_inertia, S), ib = per_s(B->inv_inertia, S);
     int64_t k11, k12, k22, mAs, mBs;
     pg_vec2 rA = A->lever, rB = B->lever;
-    pg_u128 det;
+    det_reciprocal inv_det;
     p->S = S;
     p->ia = ia;
     p->ib = ib;
@@ -69,10 +79,10 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
     if (k11 >= INT64_C(1) << 62 || k22 >= INT64_C(1) << 62) { /* lever arms far outside the envelope: keep the products in range */
         k11 >>= 8, k22 >>= 8, k12 = pg__round_shift64(k12, 8);
     }
-    det = sub_u128(pg__mul_u64((uint64_t)k11, (uint64_t)k22), square_u(k12));
-    p->kinv[0] = over_det(k22, det);
-    p->kinv[1] = over_det(-k12, det);
-    p->kinv[2] = over_det(k11, det);
+    inv_det = reciprocal_of_det(sub_u128(pg__mul_u64((uint64_t)k11, (uint64_t)k22), square_u(k12)));
+    p->kinv[0] = over_det(k22, inv_det);
+    p->kinv[1] = over_det(-k12, inv_det);
+    p->kinv[2] = over_det(k11, inv_det);
     mAs = per_s(A->inv_mass, S);
     mBs = per_s(B->inv_mass, S);
     {

@@ -23,6 +23,7 @@ typedef struct joint_side {
     pg_vec2 local;         /* anchor less the local centre of mass, body frame */
     pg_vec2 lever;         /* local turned by the angle at the step's start: world frame */
     pg_vec2 lever_now;     /* lever turned by what the body turned since (joint_levers_now) */
+    pg_rot dq_seen;        /* the body's turn lever_now was made for (identity at the step's start) */
     pg_vec2 fixed_point;   /* a side that does not move: its anchor's world point */
     pg_angle fixed_angle;  /* and its angle */
 } joint_side;
@@ -56,7 +57,7 @@ typedef struct joint_constraint {
     joint_row axial;       /* distance: along the rod; prismatic: along the axis */
     joint_row perp;        /* prismatic: across the axis */
     joint_row angular;     /* revolute limits and motor, weld, prismatic */
-    softness soft;         /* rigid rows (joint softness), or a spring's */
+    softness soft;         /* rigid rows (the step's joint softness, set once by joint_solver.c), or a spring's */
     softness soft2;        /* weld: the angular part's */
     int64_t imp[2];        /* the point's lambdas, or imp[0] for prismatic's perp row */
     int64_t axial_imp, lower_imp, upper_imp, motor_imp;
@@ -64,6 +65,9 @@ typedef struct joint_constraint {
     int64_t spring_k;      /* distance spring: h omega^2, Q16 1/s */
     int64_t spring_c;      /* distance spring: 2 zeta omega h, Q2.30 */
     pg_vec2 axis0;         /* prismatic: the axis in A's frame at the step's start (world) */
+    int64_t along, across; /* distance: the length now (along); prismatic: the translation
+                              along the axis and the offset across it; made where the rows are
+                              oriented, when the bodies moved */
 } joint_constraint;
 
 /* ---- set-up (joint_rows.c) ---- */
@@ -94,12 +98,28 @@ void pg__joint_row_orient(joint_row *r, pg_dir d, pg_vec2 rA, pg_vec2 rB);
 void pg__joint_point_orient(joint_point *p, pg_vec2 rA, pg_vec2 rB);
 
 /* ---- the substeps (inline) ---- */
-/* Each side's lever now: the step's lever turned by the body's turn since (its dq,
- * kept because prepare set turns_anchors). */
-static inline void joint_levers_now(joint_constraint *c, const solver_body *bodies)
+/* A side's lever now: the step's lever turned by the body's turn since (its dq, kept
+ * because prepare set turns_anchors). A body turns only when positions are integrated,
+ * once a substep, while the passes visit a joint ten times (warm start, solve, relax
+ * sweeps): the lever is turned again only when dq is not the one it was made for.
+ * Returns 1 when it changed. */
+static inline int joint_side_turn(joint_side *s, const solver_body *bodies)
 {
-    c->A.lever_now = c->A.active ? pg_rot_apply(bodies[c->A.slot].dq, c->A.lever) : c->A.lever;
-    c->B.lever_now = c->B.active ? pg_rot_apply(bodies[c->B.slot].dq, c->B.lever) : c->B.lever;
+    pg_rot dq;
+    if (!s->active) return 0; /* lever_now stays lever */
+    dq = bodies[s->slot].dq;
+    if (dq.c == s->dq_seen.c && dq.s == s->dq_seen.s) return 0;
+    s->dq_seen = dq;
+    s->lever_now = pg_rot_apply(dq, s->lever);
+    return 1;
+}
+
+/* Both sides' levers now; 1 when either changed (what depends on the levers alone, the
+ * point block's angular coefficients, is then made again). */
+static inline int joint_levers_now(joint_constraint *c, const solver_body *bodies)
+{
+    int a = joint_side_turn(&c->A, bodies);
+    return joint_side_turn(&c->B, bodies) | a;
 }
 
 /* Store a joint's velocities into a side's body, adding the change to the body's joint

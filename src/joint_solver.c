@@ -19,6 +19,7 @@ void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body 
                         uint32_t n_active)
 {
     const pg_world *w = ctx->world;
+    const softness rigid = pg__joint_rigid_softness(ctx->n); /* the same for every joint of the step */
     uint32_t i;
     s->change = (joint_change *)area;
     s->cons = (joint_constraint *)(void *)(s->change + w->def.max_bodies + 1u);
@@ -41,7 +42,8 @@ void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body 
             c->A.slot = ctx->dummy;
             c->A.active = 0;
             c->A.inv_mass = c->A.inv_inertia = 0;
-            c->A.local = c->A.lever = c->A.fixed_point = pg_v2_zero();
+            c->A.local = c->A.lever = c->A.lever_now = c->A.fixed_point = pg_v2_zero();
+            c->A.dq_seen = pg_rot_identity();
             c->A.fixed_angle = 0;
         }
         pg__joint_side_init(&c->B, w, j->body_b, j->anchor_b, activeB, activeB ? j->body_b : ctx->dummy, ctx->rotation);
@@ -55,6 +57,7 @@ void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body 
             c->B.change = &s->change[c->B.slot];
         }
         c->imp[0] = c->imp[1] = c->axial_imp = c->lower_imp = c->upper_imp = c->motor_imp = c->motor_max = 0;
+        c->soft = c->soft2 = rigid; /* a kind with a spring sets its own */
         switch (j->type) {
         case PG_JOINT_DISTANCE: pg__distance_joint_prepare(c, ctx); break;
         case PG_JOINT_REVOLUTE: pg__revolute_joint_prepare(c, ctx); break;
@@ -80,22 +83,26 @@ void pg__joints_warm_start(const pg_joint_stage *s, solver_body *bodies)
     }
 }
 
-static void pass(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies, int use_bias)
+/* A pass over the joints. `moved`: the bodies may have moved since the joints' last
+ * visit, so the rows that follow them (levers, directions, position errors) are made
+ * again; positions change only when they are integrated, between the solve pass and the
+ * first relax sweep, and the warm start before the solve pass orients every joint. */
+static void pass(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies, int use_bias, int moved)
 {
     uint32_t i;
     for (i = 0; i < s->count; ++i) {
         joint_constraint *c = &s->cons[i];
         switch (c->src->type) {
-        case PG_JOINT_DISTANCE: pg__distance_joint_solve(c, bodies, ctx, use_bias); break;
-        case PG_JOINT_REVOLUTE: pg__revolute_joint_solve(c, bodies, ctx, use_bias); break;
-        case PG_JOINT_WELD: pg__weld_joint_solve(c, bodies, ctx, use_bias); break;
-        case PG_JOINT_PRISMATIC: pg__prismatic_joint_solve(c, bodies, ctx, use_bias); break;
-        default: pg__mouse_joint_solve(c, bodies, ctx, use_bias); break;
+        case PG_JOINT_DISTANCE: pg__distance_joint_solve(c, bodies, ctx, use_bias, moved); break;
+        case PG_JOINT_REVOLUTE: pg__revolute_joint_solve(c, bodies, ctx, use_bias, moved); break;
+        case PG_JOINT_WELD: pg__weld_joint_solve(c, bodies, ctx, use_bias, moved); break;
+        case PG_JOINT_PRISMATIC: pg__prismatic_joint_solve(c, bodies, ctx, use_bias, moved); break;
+        default: pg__mouse_joint_solve(c, bodies, ctx, use_bias, moved); break;
         }
     }
 }
 
-void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies) { pass(s, ctx, bodies, 1); }
+void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies) { pass(s, ctx, bodies, 1, 0); }
 /* The relax stage sweeps the joints' rigid rows JOINT_RELAX_ITERATIONS times (springs
  * and soft parts act in the solve pass only). Gauss-Seidel carries a change one joint a
  * sweep, so after one sweep a long structure's relative velocities are far from
@@ -107,7 +114,7 @@ void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_b
 void pg__joints_relax(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies)
 {
     int k;
-    for (k = 0; k < JOINT_RELAX_ITERATIONS; ++k) pass(s, ctx, bodies, 0);
+    for (k = 0; k < JOINT_RELAX_ITERATIONS; ++k) pass(s, ctx, bodies, 0, k == 0);
 }
 
 void pg__joints_store(const pg_joint_stage *s, pg_world *w)
@@ -152,10 +159,12 @@ pg_result pg_joint_get_reaction(const pg_world *world, pg_joint_id id, pg_joint_
         c.A.slot = ctx.dummy;
         c.A.active = 0;
         c.A.inv_mass = c.A.inv_inertia = 0;
-        c.A.local = c.A.lever = c.A.fixed_point = pg_v2_zero();
+        c.A.local = c.A.lever = c.A.lever_now = c.A.fixed_point = pg_v2_zero();
+        c.A.dq_seen = pg_rot_identity();
         c.A.fixed_angle = 0;
     }
     pg__joint_side_init(&c.B, world, j->body_b, j->anchor_b, world->bodies[j->body_b].type == PG_BODY_DYNAMIC, j->body_b, ctx.rotation);
+    c.soft = c.soft2 = pg__joint_rigid_softness(ctx.n);
     switch (j->type) {
     case PG_JOINT_DISTANCE: pg__distance_joint_prepare(&c, &ctx); pg__distance_joint_impulse(&c, p); break;
     case PG_JOINT_REVOLUTE: pg__revolute_joint_prepare(&c, &ctx); pg__revolute_joint_impulse(&c, p); break;

@@ -142,20 +142,18 @@ void pg__mouse_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
-    joint_levers_now(c, bodies);
-    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
+    if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     joint_store(bodies, &c->B, &B);
 }
 
-void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     int64_t bx, by, vx, vy, nx, ny, qx, qy, q;
     (void)ctx;
     if (c->point.S == 0 || !use_bias) return; /* a spring: the solve pass only */
-    joint_levers_now(c, bodies);
-    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
+    if (moved && joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_anchor_now(&c->B, bodies, &bx, &by);
     pg__joint_point_speed(&A, &B, c->A.lever_now, c->B.lever_now, &vx, &vy);
     nx = c->imp[0] + pg__joint_soft_delta(vx, row_round(c->soft.bias_rate * clamp64(bx - c->A.fixed_point.x, INT32_MAX), 16), c->imp[0], &c->soft, 1);

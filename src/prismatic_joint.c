@@ -170,7 +170,6 @@ void pg__prismatic_joint_prepare(joint_constraint *c, const step_context *ctx)
     pg__joint_row_linear(&c->axial, &c->A, &c->B, d, reach, c->B.lever);
     pg__joint_row_linear(&c->perp, &c->A, &c->B, n, reach, c->B.lever);
     pg__joint_row_angular(&c->angular, &c->A, &c->B);
-    c->soft = pg__joint_rigid_softness(ctx->n);
     c->imp[0] = j->point_impulse[0];
     c->axial_imp = j->axial_impulse;
     c->motor_imp = has_motor(j) ? j->motor_impulse : 0;
@@ -182,13 +181,13 @@ void pg__prismatic_joint_prepare(joint_constraint *c, const step_context *ctx)
 }
 
 /* The axis (turned with A) and the levers where the bodies are now: the translation
- * along the axis and the offset across it, m. */
-static void orient(joint_constraint *c, const solver_body *bodies, int64_t *along, int64_t *across)
+ * along the axis and the offset across it (c->along, c->across), m. */
+static void orient(joint_constraint *c, const solver_body *bodies)
 {
     int64_t ax, ay, bx, by, dx, dy;
     pg_vec2 axis, reach;
     pg_dir d, n;
-    joint_levers_now(c, bodies);
+    (void)joint_levers_now(c, bodies); /* the direction moves with the centres too: oriented every pass */
     axis = c->A.active ? pg_rot_apply(bodies[c->A.slot].dq, c->axis0) : c->axis0; /* Q16.16 unit */
     d = pg_dir_normalize(axis.x, axis.y);
     n.x = -d.y;
@@ -200,16 +199,15 @@ static void orient(joint_constraint *c, const solver_body *bodies, int64_t *alon
     reach = pg_v2(pg__sat64((int64_t)c->A.lever_now.x + dx), pg__sat64((int64_t)c->A.lever_now.y + dy));
     pg__joint_row_orient(&c->axial, d, reach, c->B.lever_now);
     pg__joint_row_orient(&c->perp, n, reach, c->B.lever_now);
-    *along = pg__round_shift64(dx * axis.x + dy * axis.y, 16);
-    *across = pg__round_shift64(dy * axis.x - dx * axis.y, 16);
+    c->along = pg__round_shift64(dx * axis.x + dy * axis.y, 16);
+    c->across = pg__round_shift64(dy * axis.x - dx * axis.y, 16);
 }
 
 void pg__prismatic_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
-    int64_t along, across;
     if (!c->axial.on) return;
-    orient(c, bodies, &along, &across);
+    orient(c, bodies);
     joint_row_apply(&c->axial, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_row_apply(&c->perp, &A, &B, c->imp[0]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
@@ -217,7 +215,7 @@ void pg__prismatic_joint_warm_start(joint_constraint *c, solver_body *bodies)
     joint_store(bodies, &c->B, &B);
 }
 
-void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
@@ -225,7 +223,9 @@ void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const s
     pg_angle aA;
     if (!c->axial.on) return;
     aA = joint_angle_now(&c->A, bodies);
-    orient(c, bodies, &along, &across);
+    if (moved) orient(c, bodies);
+    along = c->along;
+    across = c->across;
     if (has_motor(j)) pg__joint_motor_solve(&c->axial, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
     if (has_limit(j)) {
         pg__joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, along - j->lower, 1, &c->soft, use_bias, ctx->n);

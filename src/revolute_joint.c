@@ -134,7 +134,6 @@ void pg__revolute_joint_prepare(joint_constraint *c, const step_context *ctx)
     const pg_joint *j = c->src;
     pg__joint_point_init(&c->point, &c->A, &c->B);
     pg__joint_row_angular(&c->angular, &c->A, &c->B);
-    c->soft = pg__joint_rigid_softness(ctx->n);
     c->imp[0] = j->point_impulse[0];
     c->imp[1] = j->point_impulse[1];
     c->motor_imp = has_motor(j) ? j->motor_impulse : 0;
@@ -149,22 +148,21 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
-    joint_levers_now(c, bodies);
-    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
+    if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
-    if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
+    if (c->angular.on && (c->motor_imp | c->lower_imp | c->upper_imp) != 0) /* a row of lambda 0 changes nothing */
+        joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_store(bodies, &c->A, &A);
     joint_store(bodies, &c->B, &B);
 }
 
-void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
-    int64_t ax, ay, bx, by;
+    int64_t ax = 0, ay = 0, bx = 0, by = 0;
     if (c->point.S == 0) return;
-    joint_levers_now(c, bodies);
-    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
+    if (moved && joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     if (has_motor(j)) pg__joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
     if (has_limit(j)) {
         pg_angle rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
@@ -172,8 +170,10 @@ void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const st
         pg__joint_limit_solve(&c->angular, &c->lower_imp, &A, &B, angle - j->lower, 1, &c->soft, use_bias, ctx->n);
         pg__joint_limit_solve(&c->angular, &c->upper_imp, &A, &B, angle - j->upper, -1, &c->soft, use_bias, ctx->n);
     }
-    joint_anchor_now(&c->A, bodies, &ax, &ay);
-    joint_anchor_now(&c->B, bodies, &bx, &by);
+    if (use_bias) { /* a relax sweep has no bias: the point's position error is not read */
+        joint_anchor_now(&c->A, bodies, &ax, &ay);
+        joint_anchor_now(&c->B, bodies, &bx, &by);
+    }
     pg__joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
     joint_store(bodies, &c->A, &A);
     joint_store(bodies, &c->B, &B);

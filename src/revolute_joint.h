@@ -9,7 +9,7 @@ void pg__revolute_joint_prepare(joint_constraint *c, const step_context *ctx);
 /* Apply the accumulated impulses (every substep). */
 void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies);
 /* One pass: with the soft bias (solve) or without (relax). */
-void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias);
+void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved);
 /* The impulses back into the joint. */
 void pg__revolute_joint_store(const joint_constraint *c, pg_joint *j);
 /* The impulse the accumulated lambdas stand for, on body B: x, y (Q16 N s) and the

@@ -95,8 +95,8 @@ void pg__weld_joint_prepare(joint_constraint *c, const step_context *ctx)
     const pg_joint *j = c->src;
     pg__joint_point_init(&c->point, &c->A, &c->B);
     pg__joint_row_angular(&c->angular, &c->A, &c->B);
-    c->soft = j->hertz > 0 ? pg__joint_spring_softness(j->hertz, j->damping, ctx->n) : pg__joint_rigid_softness(ctx->n);
-    c->soft2 = j->hertz2 > 0 ? pg__joint_spring_softness(j->hertz2, j->damping2, ctx->n) : pg__joint_rigid_softness(ctx->n);
+    if (j->hertz > 0) c->soft = pg__joint_spring_softness(j->hertz, j->damping, ctx->n); /* else the rigid one */
+    if (j->hertz2 > 0) c->soft2 = pg__joint_spring_softness(j->hertz2, j->damping2, ctx->n);
     c->imp[0] = j->point_impulse[0];
     c->imp[1] = j->point_impulse[1];
     c->axial_imp = j->axial_impulse;
@@ -106,28 +106,28 @@ void pg__weld_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
-    joint_levers_now(c, bodies);
-    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
+    if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
     joint_store(bodies, &c->A, &A);
     joint_store(bodies, &c->B, &B);
 }
 
-void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
+void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
-    int64_t ax, ay, bx, by;
+    int64_t ax = 0, ay = 0, bx = 0, by = 0;
     pg_angle rel;
     (void)ctx;
     if (c->point.S == 0) return;
-    joint_levers_now(c, bodies);
-    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
+    if (moved && joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
     if (use_bias || j->hertz2 == 0) pg__joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(rel), &c->soft2, use_bias);
-    joint_anchor_now(&c->A, bodies, &ax, &ay);
-    joint_anchor_now(&c->B, bodies, &bx, &by);
+    if (use_bias) { /* a relax sweep has no bias: the point's position error is not read */
+        joint_anchor_now(&c->A, bodies, &ax, &ay);
+        joint_anchor_now(&c->B, bodies, &bx, &by);
+    }
     if (use_bias || j->hertz == 0) pg__joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
     joint_store(bodies, &c->A, &A);
     joint_store(bodies, &c->B, &B);

@@ -3,7 +3,8 @@
  * Rounding follows fixed.h: nearest, ties away from zero, symmetric in sign. */
 #ifndef POGON_SRC_WIDE_H
 #define POGON_SRC_WIDE_H
-#include "pogon/fixed.h"
+#include "intmath.h"
+#include "pogon/config.h" /* PG_FAST_DIV64 */
 
 typedef struct pg_u128 { uint64_t hi, lo; } pg_u128;
 
@@ -47,21 +48,38 @@ static inline int64_t pg__mul64_shr(int64_t a, int64_t b, int shift)
     return negative ? -(int64_t)q.lo : (int64_t)q.lo;
 }
 
-/* round(num * 2^shift / den) by long division, saturated to +-INT64_MAX; den == 0
- * saturates by the sign of num (0 for 0). 0 <= shift <= 64. Slow: for set-up, not
- * for the step's inner loops. */
+/* round(num * 2^shift / den) by long division, saturated to +-INT64_MAX (a quotient
+ * of 2^63 or more); den == 0 saturates by the sign of num (0 for 0). 0 <= shift <= 64.
+ * With a hardware 64-bit divider (PG_FAST_DIV64) it takes as many quotient bits per
+ * division as the remainder has room for, 64 less den's bit length (24 for a Q38 mass);
+ * for a den within 2^8 of 2^63, or without the divider, one bit a turn by compare and
+ * subtract. Both ways give the same bits. */
 static inline int64_t pg__div64_shl(int64_t num, int64_t den, int shift)
 {
-    int negative = (num < 0) != (den < 0), i;
+    int negative = (num < 0) != (den < 0), room, k;
     uint64_t un = pg__mag64(num), ud = pg__mag64(den), q, r;
     if (den == 0) return num > 0 ? INT64_MAX : num < 0 ? -INT64_MAX : 0;
     q = un / ud;
     r = un % ud;
-    for (i = 0; i < shift; ++i) {
-        if (q >> 62) return negative ? -INT64_MAX : INT64_MAX;
-        q <<= 1;
-        r <<= 1; /* r < ud <= 2^63 */
-        if (r >= ud) { q |= 1u; r -= ud; }
+    room = 64 - pg__bit_length64(ud); /* r < ud, so r << room fits */
+#if !PG_FAST_DIV64
+    room = 0;
+#endif
+    if (room < 8) {
+        for (; shift > 0; --shift) {
+            if (q >> 62) return negative ? -INT64_MAX : INT64_MAX;
+            q <<= 1;
+            r <<= 1; /* r < ud <= 2^63 */
+            if (r >= ud) { q |= 1u; r -= ud; }
+        }
+    }
+    while (shift > 0) {
+        k = shift < room ? shift : room;
+        if (q >> (63 - k)) return negative ? -INT64_MAX : INT64_MAX; /* q << k would reach 2^63 */
+        r <<= k;
+        q = (q << k) | (r / ud);
+        r %= ud;
+        shift -= k;
     }
     if (r >= ud - r) ++q;
     if (q > (uint64_t)INT64_MAX) return negative ? -INT64_MAX : INT64_MAX;
