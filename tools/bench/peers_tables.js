@@ -185,7 +185,8 @@ if (section === '' || section === 'joints') {
     if (Math.abs(figure) < 1 && r.worst_gap_m < 0.1) return 'yes';
     return r.worst_gap_m >= 1 ? 'no, blew apart' : 'no';
   };
-  const fmtM = (v) => (v === undefined ? '' : Math.abs(v) >= 100 ? v.toExponential(1) : v.toFixed(3));
+  const fmtM = (v) => (v === undefined ? '' : Math.abs(v) >= 100 ? v.toExponential(1) : Math.abs(v) >= 0.01 || v === 0
+    ? v.toFixed(3) : v.toExponential(1));
   const joints = res.filter((x) => x.scene === 'joint_grid' || x.scene === 'chain');
   if (joints.length === 0) {
     p('No joint scenes in this results file: `tools/bench/peers` (or `tools/bench/peers --joints-only`) runs them.');
@@ -203,7 +204,8 @@ if (section === '' || section === 'joints') {
     const reps = joints.find((x) => x.peer === 'pogon-native');
     p('');
     p(`600 steps (10 s), sleeping off in every engine, nothing collides; median of ${reps ? reps.repeat : '?'} ` +
-      `run${reps && reps.repeat === 1 ? '' : 's'}. ${roundsNote()}` +
+      `run${reps && reps.repeat === 1 ? '' : 's'}. ` +
+      (maxRounds > 1 ? `The joint scenes ran ${maxRounds} rounds round every engine; each cell is the fastest of its rounds. ` : '') +
       'Sag: how far the grid\'s bottom row came down (mean); stretch: the largest over the chains of the sum of the ' +
       'distances between each joint\'s two anchors; worst joint gap: the largest such distance in the scene, all at the ' +
       'end of the run. "Holds" when the figure is under 1 m and no joint is 0.1 m apart.');
