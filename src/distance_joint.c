@@ -144,8 +144,16 @@ pg_result pg_distance_joint_get_def(const pg_world *world, pg_joint_id id, pg_di
 }
 
 /* ---- the rows ------------------------------------------------------------------------------ */
-/* One row along the rod's direction at the step's start carries the length (rigid or a
- * spring) and both limits; each pass measures the length where the bodies are now. */
+/* One row along the rod carries the length (rigid or a spring) and both limits; each
+ * pass turns it to where the anchors are now and measures the length there.
+ * The spring is a force, not a soft constraint: once per substep (the solve pass) it
+ * changes the relative speed along the rod by -h omega^2 C (semi-implicit Euler, which
+ * keeps an undamped spring's energy: a soft constraint's implicit step would take
+ * 2 pi omega h of it every period), then its damping 2 zeta omega implicitly,
+ * v / (1 + 2 zeta omega h), stable for any ratio. omega = 2 pi hertz, capped at a quarter
+ * of the substep rate (omega h <= pi / 2 < 2, where the explicit part is stable). In the
+ * row's units (relative speed) the pair's effective mass cancels: the spring's frequency
+ * is its hertz whatever the masses. */
 
 static int has_spring(const pg_joint *j) { return (j->flags & PG_JOINT_FLAG_SPRING) != 0; }
 static int has_limit(const pg_joint *j) { return (j->flags & PG_JOINT_FLAG_LIMIT) != 0 && j->lower < j->upper; }
@@ -163,30 +171,40 @@ void pg__distance_joint_prepare(joint_constraint *c, const step_context *ctx)
     }
     pg__joint_row_linear(&c->axial, &c->A, &c->B, d, c->A.lever, c->B.lever);
     c->soft = pg__joint_rigid_softness(ctx->n);
-    c->soft2 = pg__joint_spring_softness(j->hertz, j->damping, ctx->n);
-    c->axial_imp = has_spring(j) && j->hertz == 0 ? 0 : j->axial_impulse;
+    c->axial_imp = j->axial_impulse;
+    if (has_spring(j)) { /* spring coefficients: h omega^2 (Q16 1/s) and 2 zeta omega h (Q30) */
+        int64_t hz = j->hertz < (pg_fix)((int64_t)ctx->n * 16384) ? j->hertz : (pg_fix)((int64_t)ctx->n * 16384);
+        int64_t omega = pg__mul64_shr(hz, PG_FIX_TWO_PI, 16); /* Q16 rad/s, <= 2^30 */
+        c->spring_k = pg__mul64_shr(pg__mul64_shr(omega, omega, 16), ctx->h_q32, 32);             /* h omega^2, Q16 */
+        c->spring_c = pg__mul64_shr(pg__mul64_shr(2 * (int64_t)j->damping, omega, 16), ctx->h_q32, 18); /* 2 zeta omega h, Q30 */
+    }
     c->lower_imp = has_limit(j) ? j->lower_impulse : 0;
     c->upper_imp = has_limit(j) ? j->upper_impulse : 0;
+}
+
+/* The rod's direction and the levers where the bodies are now; returns the length. */
+static int64_t orient(joint_constraint *c, const solver_body *bodies)
+{
+    int64_t ax, ay, bx, by, dx, dy, len;
+    joint_levers_now(c, bodies);
+    joint_anchor_now(&c->A, bodies, &ax, &ay);
+    joint_anchor_now(&c->B, bodies, &bx, &by);
+    dx = clamp64(bx - ax, INT32_MAX);
+    dy = clamp64(by - ay, INT32_MAX);
+    len = (int64_t)pg__sqrt_nearest((uint64_t)(dx * dx + dy * dy));
+    pg__joint_row_orient(&c->axial, len * 2 >= LENGTH_MIN ? pg_dir_normalize(dx, dy) : c->axial.d, c->A.lever_now, c->B.lever_now);
+    return len;
 }
 
 void pg__distance_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (!c->axial.on) return;
-    joint_row_apply(&c->axial, &A, &B, c->axial_imp + c->lower_imp - c->upper_imp);
+    orient(c, bodies);
+    /* a spring's impulse is a force's, made again each substep: not warm started */
+    joint_row_apply(&c->axial, &A, &B, (has_spring(c->src) ? 0 : c->axial_imp) + c->lower_imp - c->upper_imp);
     joint_store(&bodies[c->A.slot], &A, c->A.active);
     joint_store(&bodies[c->B.slot], &B, c->B.active);
-}
-
-/* |pB - pA| now, Q16.16 m (saturating past 32767 m) */
-static int64_t length_now(const joint_constraint *c, const solver_body *bodies)
-{
-    int64_t ax, ay, bx, by, dx, dy;
-    joint_anchor_now(&c->A, bodies, &ax, &ay);
-    joint_anchor_now(&c->B, bodies, &bx, &by);
-    dx = clamp64(bx - ax, INT32_MAX);
-    dy = clamp64(by - ay, INT32_MAX);
-    return (int64_t)pg__sqrt_nearest((uint64_t)(dx * dx + dy * dy));
 }
 
 void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias)
@@ -195,11 +213,15 @@ void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const st
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     int64_t len;
     if (!c->axial.on) return;
-    len = length_now(c, bodies);
+    len = orient(c, bodies);
     if (!has_spring(j)) {
         joint_row_solve(&c->axial, &c->axial_imp, &A, &B, len - j->length, &c->soft, use_bias);
-    } else if (j->hertz > 0) { /* a spring acts in both passes */
-        joint_row_solve(&c->axial, &c->axial_imp, &A, &B, len - j->length, &c->soft2, 1);
+    } else if (use_bias) { /* the spring: once a substep */
+        int64_t v = joint_row_speed(&c->axial, &A, &B), C = clamp64(len - j->length, INT32_MAX);
+        int64_t v1 = clamp64(v - row_round(c->spring_k * C, 16), LAMBDA_MAX);
+        v1 = pg__div64_shl(v1, (INT64_C(1) << 30) + c->spring_c, 30); /* the damping, implicitly */
+        c->axial_imp = clamp64(v1 - v, LAMBDA_MAX);
+        joint_row_apply(&c->axial, &A, &B, c->axial_imp);
     }
     if (has_limit(j)) {
         joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, len - j->lower, 1, &c->soft, use_bias, ctx->n);

@@ -17,6 +17,7 @@ void pg__joint_side_init(joint_side *s, const pg_world *w, uint32_t body, pg_vec
     s->inv_inertia = active && rotation ? b->inv_inertia : 0;
     s->local = pg_v2(pg__sat64((int64_t)anchor.x - b->local_center.x), pg__sat64((int64_t)anchor.y - b->local_center.y));
     s->lever = pg_rot_apply(b->rot, s->local);
+    s->lever_now = s->lever;
     s->fixed_point = pg_v2_add(b->center, s->lever);
     s->fixed_angle = b->angle;
 }
@@ -51,10 +52,13 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
     pg_vec2 rA = A->lever, rB = B->lever;
     pg_u128 det;
     p->S = S;
+    p->ia = ia;
+    p->ib = ib;
     if (S == 0) {
         int k;
         for (k = 0; k < 3; ++k) p->mA[k] = p->mB[k] = p->kinv[k] = 0;
         p->gA[0] = p->gA[1] = p->gB[0] = p->gB[1] = 0;
+        p->ia = p->ib = 0;
         return;
     }
     /* K' = I + (1/IA / S) rA_perp rA_perp^T + (1/IB / S) rB_perp rB_perp^T, Q2.30 (r^2 in Q32 < 2^62) */
@@ -77,35 +81,50 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
             p->mB[k] = (int32_t)row_round(mBs * p->kinv[k], 30);
         }
     }
+    pg__joint_point_orient(p, rA, rB);
+}
+
+void pg__joint_point_orient(joint_point *p, pg_vec2 rA, pg_vec2 rB)
+{
     /* g_j = (1/I / S) sum_i r_perp_i kinv_ij, r_perp = (-r.y, r.x): Q16 x Q30 = Q46, then Q30 x Q46 >> 52 = Q24 */
-    p->gA[0] = sat32(pg__mul64_shr(ia, -(int64_t)rA.y * p->kinv[0] + (int64_t)rA.x * p->kinv[1], 52));
-    p->gA[1] = sat32(pg__mul64_shr(ia, -(int64_t)rA.y * p->kinv[1] + (int64_t)rA.x * p->kinv[2], 52));
-    p->gB[0] = sat32(pg__mul64_shr(ib, -(int64_t)rB.y * p->kinv[0] + (int64_t)rB.x * p->kinv[1], 52));
-    p->gB[1] = sat32(pg__mul64_shr(ib, -(int64_t)rB.y * p->kinv[1] + (int64_t)rB.x * p->kinv[2], 52));
+    p->gA[0] = p->ia == 0 ? 0 : sat32(pg__mul64_shr(p->ia, -(int64_t)rA.y * p->kinv[0] + (int64_t)rA.x * p->kinv[1], 52));
+    p->gA[1] = p->ia == 0 ? 0 : sat32(pg__mul64_shr(p->ia, -(int64_t)rA.y * p->kinv[1] + (int64_t)rA.x * p->kinv[2], 52));
+    p->gB[0] = p->ib == 0 ? 0 : sat32(pg__mul64_shr(p->ib, -(int64_t)rB.y * p->kinv[0] + (int64_t)rB.x * p->kinv[1], 52));
+    p->gB[1] = p->ib == 0 ? 0 : sat32(pg__mul64_shr(p->ib, -(int64_t)rB.y * p->kinv[1] + (int64_t)rB.x * p->kinv[2], 52));
 }
 
 void pg__joint_row_linear(joint_row *r, const joint_side *A, const joint_side *B, pg_dir d, pg_vec2 rA, pg_vec2 rB)
 {
     int64_t S = add_sat(A->inv_mass, B->inv_mass), ia = per_s(A->inv_inertia, S), ib = per_s(B->inv_inertia, S), Kp, kA, kB;
+    pg_fix cA = pg__sat64(row_round((int64_t)rA.x * d.y - (int64_t)rA.y * d.x, 30));
+    pg_fix cB = pg__sat64(row_round((int64_t)rB.x * d.y - (int64_t)rB.y * d.x, 30));
+    r->on = S > 0;
+    r->kA = r->kB = r->qA = r->qB = r->K = 0;
+    if (r->on) {
+        Kp = add_sat(add_sat(INT64_C(1) << 30, pg__mul64_shr(ia, (int64_t)cA * cA, 32)), pg__mul64_shr(ib, (int64_t)cB * cB, 32));
+        kA = pg__div64_shl(per_s(A->inv_mass, S), Kp, 30);
+        kB = pg__div64_shl(per_s(B->inv_mass, S), Kp, 30);
+        r->kA = kA;
+        r->kB = kB;
+        r->qA = pg__div64_shl(ia, Kp, 30);
+        r->qB = pg__div64_shl(ib, Kp, 30);
+        r->K = pg__mul64_shr(S, Kp, 30);
+    }
+    pg__joint_row_orient(r, d, rA, rB);
+}
+
+void pg__joint_row_orient(joint_row *r, pg_dir d, pg_vec2 rA, pg_vec2 rB)
+{
     r->d = d;
     r->cA = pg__sat64(row_round((int64_t)rA.x * d.y - (int64_t)rA.y * d.x, 30));
     r->cB = pg__sat64(row_round((int64_t)rB.x * d.y - (int64_t)rB.y * d.x, 30));
-    r->on = S > 0;
-    if (!r->on) {
-        r->lA_x = r->lA_y = r->lB_x = r->lB_y = r->gA = r->gB = 0;
-        r->K = 0;
-        return;
-    }
-    Kp = add_sat(add_sat(INT64_C(1) << 30, pg__mul64_shr(ia, (int64_t)r->cA * r->cA, 32)), pg__mul64_shr(ib, (int64_t)r->cB * r->cB, 32));
-    kA = pg__div64_shl(per_s(A->inv_mass, S), Kp, 30);
-    kB = pg__div64_shl(per_s(B->inv_mass, S), Kp, 30);
-    r->lA_x = (int32_t)row_round(kA * d.x, 30);
-    r->lA_y = (int32_t)row_round(kA * d.y, 30);
-    r->lB_x = (int32_t)row_round(kB * d.x, 30);
-    r->lB_y = (int32_t)row_round(kB * d.y, 30);
-    r->gA = sat32(pg__div64_shl(pg__mul64_shr(ia, r->cA, 22), Kp, 30));
-    r->gB = sat32(pg__div64_shl(pg__mul64_shr(ib, r->cB, 22), Kp, 30));
-    r->K = pg__mul64_shr(S, Kp, 30);
+    r->lA_x = (int32_t)row_round(r->kA * d.x, 30);
+    r->lA_y = (int32_t)row_round(r->kA * d.y, 30);
+    r->lB_x = (int32_t)row_round(r->kB * d.x, 30);
+    r->lB_y = (int32_t)row_round(r->kB * d.y, 30);
+    /* Q30 x Q16 >> 22 = Q24 */
+    r->gA = r->qA == 0 ? 0 : sat32(pg__mul64_shr(r->qA, r->cA, 22));
+    r->gB = r->qB == 0 ? 0 : sat32(pg__mul64_shr(r->qB, r->cB, 22));
 }
 
 void pg__joint_row_angular(joint_row *r, const joint_side *A, const joint_side *B)
@@ -114,23 +133,36 @@ void pg__joint_row_angular(joint_row *r, const joint_side *A, const joint_side *
     r->d.x = r->d.y = 0;
     r->cA = r->cB = PG_FIX_ONE;
     r->lA_x = r->lA_y = r->lB_x = r->lB_y = 0;
+    r->kA = r->kB = r->qA = r->qB = 0;
     r->on = S > 0;
     r->gA = r->on ? sat32(pg__div64_shl(A->inv_inertia, S, 24)) : 0;
     r->gB = r->on ? sat32(pg__div64_shl(B->inv_inertia, S, 24)) : 0;
     r->K = S;
 }
 
-softness pg__joint_rigid_softness(uint32_t n_per_second)
+/* Box2D v3's b2MakeSoft (solver_kernel.h's pg__make_soft) with h omega and a2 in Q32
+ * instead of Q16: at 60 Hz and 240 substeps a second Q16 keeps a2 = (h omega)^2 ... to
+ * 2 % only, and a spring's frequency goes as sqrt(a2). hertz is capped at a quarter of
+ * the substep rate, as the contacts'. */
+static softness precise_soft(pg_fix hertz, pg_fix zeta, uint32_t n)
 {
-    pg_fix cap = (pg_fix)((int64_t)n_per_second * 16384); /* n / 4 Hz, Q16.16 */
-    return pg__make_soft(PG_FIX_C(60) < cap ? PG_FIX_C(60) : cap, PG_FIX_C(2), n_per_second);
+    softness s;
+    pg_fix cap = (pg_fix)((int64_t)n * 16384); /* n / 4 Hz, Q16.16 */
+    int64_t omega = (int64_t)(hertz < cap ? hertz : cap) * PG_FIX_TWO_PI; /* Q32 rad/s: < 2^26 2^18.7 */
+    int64_t h_omega = (omega + (int64_t)n / 2) / (int64_t)n;                      /* Q32, <= pi / 2 */
+    int64_t a1 = 2 * (int64_t)zeta * 65536 + h_omega; /* Q32 */
+    int64_t a2 = pg__mul64_shr(h_omega, a1, 32);                                   /* Q32 */
+    s.bias_rate = a1 > 0 ? pg__sat64(pg__div64_shl(omega, a1, 16)) : 0;
+    s.mass_scale = (int32_t)pg__div64_shl(a2, (INT64_C(1) << 32) + a2, 30);
+    s.impulse_scale = (int32_t)pg__div64_shl(INT64_C(1) << 32, (INT64_C(1) << 32) + a2, 30);
+    s.hold_rate = 0;   /* the contacts' (DEEP PUSH): not used by joints */
+    s.floor_depth = 0;
+    return s;
 }
 
-softness pg__joint_spring_softness(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
-{
-    pg_fix cap = (pg_fix)((int64_t)n_per_second * 16384);
-    return pg__make_soft(hertz < cap ? hertz : cap, zeta, n_per_second);
-}
+softness pg__joint_rigid_softness(uint32_t n_per_second) { return precise_soft(PG_FIX_C(60), PG_FIX_C(5), n_per_second); }
+
+softness pg__joint_spring_softness(pg_fix hertz, pg_fix zeta, uint32_t n_per_second) { return precise_soft(hertz, zeta, n_per_second); }
 
 int64_t pg__joint_row_cap(int64_t K, pg_fix f, int64_t h_q32)
 {

@@ -21,6 +21,7 @@ typedef struct joint_side {
     int64_t inv_mass, inv_inertia; /* Q25.38; 0 for a side that does not move */
     pg_vec2 local;         /* anchor less the local centre of mass, body frame */
     pg_vec2 lever;         /* local turned by the angle at the step's start: world frame */
+    pg_vec2 lever_now;     /* lever turned by what the body turned since (joint_levers_now) */
     pg_vec2 fixed_point;   /* a side that does not move: its anchor's world point */
     pg_angle fixed_angle;  /* and its angle */
 } joint_side;
@@ -31,6 +32,8 @@ typedef struct joint_row {
     pg_fix cA, cB;                   /* r x d (m), or 1 for an angular row */
     int32_t lA_x, lA_y, lB_x, lB_y;  /* Q2.30: (1/m) / K times d */
     int32_t gA, gB;                  /* Q8.24: (1/I) c / K */
+    int64_t kA, kB;                  /* Q2.30: (1/m) / K, kept for the passes' new directions */
+    int64_t qA, qB;                  /* Q2.30: (1/I) / K in units of S (joint_row_orient) */
     int64_t K;                       /* Q25.38: K (1/kg, or 1/(kg m^2)), for forces and caps */
     int on;                          /* 0: neither side can respond (K = 0) */
 } joint_row;
@@ -41,6 +44,7 @@ typedef struct joint_point {
     int32_t gA[2], gB[2];  /* Q8.24: (1/I / S) r_perp . K'^-1 */
     int32_t kinv[3];       /* Q2.30: K'^-1 */
     int64_t S;             /* Q25.38 */
+    int64_t ia, ib;        /* Q2.30: (1/I) / S, for the g of the levers now */
 } joint_point;
 
 typedef struct joint_constraint {
@@ -52,10 +56,12 @@ typedef struct joint_constraint {
     joint_row perp;        /* prismatic: across the axis */
     joint_row angular;     /* revolute limits and motor, weld, prismatic */
     softness soft;         /* rigid rows (joint softness), or a spring's */
-    softness soft2;        /* weld: the angular part's; distance/mouse: the spring's */
+    softness soft2;        /* weld: the angular part's */
     int64_t imp[2];        /* the point's lambdas, or imp[0] for prismatic's perp row */
     int64_t axial_imp, lower_imp, upper_imp, motor_imp;
     int64_t motor_max;     /* the motor's (mouse: the force's) cap, as lambda */
+    int64_t spring_k;      /* distance spring: h omega^2, Q16 1/s */
+    int64_t spring_c;      /* distance spring: 2 zeta omega h, Q2.30 */
     pg_vec2 axis0;         /* prismatic: the axis in A's frame at the step's start (world) */
 } joint_constraint;
 
@@ -68,7 +74,7 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
 void pg__joint_row_linear(joint_row *r, const joint_side *A, const joint_side *B, pg_dir d, pg_vec2 rA, pg_vec2 rB);
 /* An angular row (wB - wA). */
 void pg__joint_row_angular(joint_row *r, const joint_side *A, const joint_side *B);
-/* The joints' rigid softness for the step: 60 Hz capped at a quarter of the substep rate, damping ratio 2. */
+/* The joints' rigid softness for the step: 60 Hz capped at a quarter of the substep rate, damping ratio 5. */
 softness pg__joint_rigid_softness(uint32_t n_per_second);
 /* A spring's softness, its hertz capped at a quarter of the substep rate as the contacts'. */
 softness pg__joint_spring_softness(pg_fix hertz, pg_fix zeta, uint32_t n_per_second);
@@ -78,7 +84,21 @@ int64_t pg__joint_row_cap(int64_t K, pg_fix f, int64_t h_q32);
 int64_t pg__joint_row_impulse(const joint_row *r, int64_t lambda);
 void pg__joint_point_impulse(const joint_point *p, const int64_t L[2], int64_t out[2]);
 
+/* Turn a linear row to direction d with levers rA, rB (the set-up's K kept): the rows
+ * follow the bodies through the substeps, as Box2D v3's joints do. */
+void pg__joint_row_orient(joint_row *r, pg_dir d, pg_vec2 rA, pg_vec2 rB);
+/* The point block's angular coefficients for the levers now (K'^-1 kept). */
+void pg__joint_point_orient(joint_point *p, pg_vec2 rA, pg_vec2 rB);
+
 /* ---- the substeps (inline) ---- */
+/* Each side's lever now: the step's lever turned by the body's turn since (its dq,
+ * kept because prepare set turns_anchors). */
+static inline void joint_levers_now(joint_constraint *c, const solver_body *bodies)
+{
+    c->A.lever_now = c->A.active ? pg_rot_apply(bodies[c->A.slot].dq, c->A.lever) : c->A.lever;
+    c->B.lever_now = c->B.active ? pg_rot_apply(bodies[c->B.slot].dq, c->B.lever) : c->B.lever;
+}
+
 /* Store a joint's velocities into a body, adding the change to the body's joint sum
  * (solver_body's jv: the contacts' warm start leaves it out, WARM START). */
 static inline void joint_store(solver_body *b, const velocity *v, int active)
@@ -91,7 +111,7 @@ static inline void joint_store(solver_body *b, const velocity *v, int active)
     b->jv_w += (int64_t)b->w - w0;
 }
 
-/* The anchor's world point now: a moving side's centre plus its lever turned to its angle now. */
+/* The anchor's world point now: a moving side's centre plus its lever now. */
 static inline void joint_anchor_now(const joint_side *s, const solver_body *bodies, int64_t *x, int64_t *y)
 {
     if (!s->active) {
@@ -99,9 +119,8 @@ static inline void joint_anchor_now(const joint_side *s, const solver_body *bodi
         *y = s->fixed_point.y;
     } else {
         const solver_body *b = &bodies[s->slot];
-        pg_vec2 r = pg_rot_apply(pg_rot_from_angle(b->a), s->local);
-        *x = (int64_t)b->c.x + r.x;
-        *y = (int64_t)b->c.y + r.y;
+        *x = (int64_t)b->c.x + s->lever_now.x;
+        *y = (int64_t)b->c.y + s->lever_now.y;
     }
 }
 
@@ -154,7 +173,7 @@ static inline void joint_point_solve(joint_constraint *c, velocity *A, velocity 
                                      int use_soft)
 {
     int64_t vx, vy, bx = 0, by = 0, nx, ny;
-    joint_point_speed(A, B, c->A.lever, c->B.lever, &vx, &vy);
+    joint_point_speed(A, B, c->A.lever_now, c->B.lever_now, &vx, &vy);
     if (use_soft) {
         bx = row_round(s->bias_rate * clamp64(Cx, INT32_MAX), 16);
         by = row_round(s->bias_rate * clamp64(Cy, INT32_MAX), 16);

@@ -12,7 +12,7 @@
 
 size_t pg__joint_constraint_bytes(uint32_t max_joints) { return sizeof(joint_constraint) * (size_t)max_joints; }
 
-void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, void *area)
+void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body *bodies, void *area)
 {
     const pg_world *w = ctx->world;
     uint32_t i;
@@ -39,6 +39,9 @@ void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, void *area)
             c->A.fixed_angle = 0;
         }
         pg__joint_side_init(&c->B, w, j->body_b, j->anchor_b, activeB, activeB ? j->body_b : ctx->dummy, ctx->rotation);
+        /* the integration keeps these bodies' turn since the step's start (dq): the levers follow it */
+        if (activeA) bodies[c->A.slot].turns_anchors = 1;
+        if (activeB) bodies[c->B.slot].turns_anchors = 1;
         c->imp[0] = c->imp[1] = c->axial_imp = c->lower_imp = c->upper_imp = c->motor_imp = c->motor_max = 0;
         switch (j->type) {
         case PG_JOINT_DISTANCE: pg__distance_joint_prepare(c, ctx); break;

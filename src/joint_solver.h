@@ -13,7 +13,7 @@ typedef struct pg_joint_stage {
 /* Bytes of max_joints constraints in the solver's scratch. */
 size_t pg__joint_constraint_bytes(uint32_t max_joints);
 /* One constraint per joint with a side that moves in this step (needs the solver bodies set). */
-void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, void *area);
+void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body *bodies, void *area);
 void pg__joints_warm_start(const pg_joint_stage *s, solver_body *bodies);
 void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies);
 void pg__joints_relax(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies);

@@ -142,6 +142,8 @@ void pg__mouse_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     joint_store(&bodies[c->B.slot], &B, c->B.active);
 }
@@ -153,8 +155,10 @@ void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_
     (void)ctx;
     (void)use_bias; /* a spring: the same in both passes */
     if (c->point.S == 0) return;
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_anchor_now(&c->B, bodies, &bx, &by);
-    joint_point_speed(&A, &B, c->A.lever, c->B.lever, &vx, &vy);
+    joint_point_speed(&A, &B, c->A.lever_now, c->B.lever_now, &vx, &vy);
     nx = c->imp[0] + joint_soft_delta(vx, row_round(c->soft.bias_rate * clamp64(bx - c->A.fixed_point.x, INT32_MAX), 16), c->imp[0], &c->soft, 1);
     ny = c->imp[1] + joint_soft_delta(vy, row_round(c->soft.bias_rate * clamp64(by - c->A.fixed_point.y, INT32_MAX), 16), c->imp[1], &c->soft, 1);
     nx = clamp64(nx, LAMBDA_MAX);

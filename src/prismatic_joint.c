@@ -181,10 +181,35 @@ void pg__prismatic_joint_prepare(joint_constraint *c, const step_context *ctx)
     if (c->motor_imp < -c->motor_max) c->motor_imp = -c->motor_max;
 }
 
+/* The axis (turned with A) and the levers where the bodies are now: the translation
+ * along the axis and the offset across it, m. */
+static void orient(joint_constraint *c, const solver_body *bodies, int64_t *along, int64_t *across)
+{
+    int64_t ax, ay, bx, by, dx, dy;
+    pg_vec2 axis, reach;
+    pg_dir d, n;
+    joint_levers_now(c, bodies);
+    axis = c->A.active ? pg_rot_apply(bodies[c->A.slot].dq, c->axis0) : c->axis0; /* Q16.16 unit */
+    d = pg_dir_normalize(axis.x, axis.y);
+    n.x = -d.y;
+    n.y = d.x;
+    joint_anchor_now(&c->A, bodies, &ax, &ay);
+    joint_anchor_now(&c->B, bodies, &bx, &by);
+    dx = clamp64(bx - ax, INT32_MAX);
+    dy = clamp64(by - ay, INT32_MAX);
+    reach = pg_v2(pg__sat64((int64_t)c->A.lever_now.x + dx), pg__sat64((int64_t)c->A.lever_now.y + dy));
+    pg__joint_row_orient(&c->axial, d, reach, c->B.lever_now);
+    pg__joint_row_orient(&c->perp, n, reach, c->B.lever_now);
+    *along = pg__round_shift64(dx * axis.x + dy * axis.y, 16);
+    *across = pg__round_shift64(dy * axis.x - dx * axis.y, 16);
+}
+
 void pg__prismatic_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    int64_t along, across;
     if (!c->axial.on) return;
+    orient(c, bodies, &along, &across);
     joint_row_apply(&c->axial, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_row_apply(&c->perp, &A, &B, c->imp[0]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
@@ -196,23 +221,17 @@ void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const s
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
-    int64_t ax, ay, bx, by, dx, dy;
-    pg_vec2 axis;
+    int64_t along, across;
     pg_angle aA;
     if (!c->axial.on) return;
     aA = joint_angle_now(&c->A, bodies);
-    axis = pg_rot_apply(pg_rot_from_angle(aA), j->axis); /* Q16.16 unit */
-    joint_anchor_now(&c->A, bodies, &ax, &ay);
-    joint_anchor_now(&c->B, bodies, &bx, &by);
-    dx = clamp64(bx - ax, INT32_MAX);
-    dy = clamp64(by - ay, INT32_MAX);
+    orient(c, bodies, &along, &across);
     if (has_motor(j)) joint_motor_solve(&c->axial, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
     if (has_limit(j)) {
-        int64_t t = pg__round_shift64(dx * axis.x + dy * axis.y, 16);
-        joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, t - j->lower, 1, &c->soft, use_bias, ctx->n);
-        joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, t - j->upper, -1, &c->soft, use_bias, ctx->n);
+        joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, along - j->lower, 1, &c->soft, use_bias, ctx->n);
+        joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, along - j->upper, -1, &c->soft, use_bias, ctx->n);
     }
-    joint_row_solve(&c->perp, &c->imp[0], &A, &B, pg__round_shift64(dy * axis.x - dx * axis.y, 16), &c->soft, use_bias);
+    joint_row_solve(&c->perp, &c->imp[0], &A, &B, across, &c->soft, use_bias);
     joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(joint_angle_now(&c->B, bodies) - aA - j->reference_angle),
                     &c->soft, use_bias);
     joint_store(&bodies[c->A.slot], &A, c->A.active);

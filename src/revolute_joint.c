@@ -149,6 +149,8 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_store(&bodies[c->A.slot], &A, c->A.active);
@@ -161,6 +163,8 @@ void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const st
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     int64_t ax, ay, bx, by;
     if (c->point.S == 0) return;
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     if (has_motor(j)) joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
     if (has_limit(j)) {
         pg_angle rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;

@@ -261,7 +261,7 @@ void pg__solve(pg_world *w)
 
     /* The stages: each constraint kind takes part in each through a call of its own. */
     joints.count = 0;
-    if (w->joint_count > 0) pg__joints_prepare(&joints, &ctx, joint_area);
+    if (w->joint_count > 0) pg__joints_prepare(&joints, &ctx, bodies, joint_area);
     have_joints = joints.count > 0;
     pg__contacts_prepare(&contacts, &ctx, bodies, area, deep_list);
     for (sub = 0; sub < w->def.substeps; ++sub) {

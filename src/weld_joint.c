@@ -106,6 +106,8 @@ void pg__weld_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
     joint_store(&bodies[c->A.slot], &A, c->A.active);
@@ -120,6 +122,8 @@ void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_c
     pg_angle rel;
     (void)ctx;
     if (c->point.S == 0) return;
+    joint_levers_now(c, bodies);
+    pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
     joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(rel), &c->soft2, use_bias || j->hertz2 > 0);
     joint_anchor_now(&c->A, bodies, &ax, &ay);

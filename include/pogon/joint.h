@@ -30,7 +30,7 @@
  *   - Two bodies joined by a joint do not collide with each other unless its
  *     collide_connected is nonzero (default 0 for every kind).
  *   - Rigid rows are soft constraints of 60 Hz (capped at a quarter of the substep rate)
- *     and damping ratio 2, as Box2D v3's joints; springs use the def's hertz and ratio.
+ *     and damping ratio 5, as Box2D v3.1's joints; springs use the def's hertz and ratio.
  *   - A failing call changes nothing. Creating, destroying or changing a joint wakes its
  *     bodies.
  *   - The world's capacity is pg_world_def.max_joints.

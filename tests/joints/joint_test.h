@@ -15,6 +15,10 @@ static inline test_world joint_world(uint32_t max_bodies, uint32_t max_joints)
     d.max_shapes = max_bodies;
     d.max_contacts = 4u * max_bodies;
     d.max_joints = max_joints;
+#ifdef JT_HZ
+    d.step_hz = JT_HZ;
+    d.substeps = JT_SUB;
+#endif
     return make_world_def(&d);
 }
 
