@@ -16,6 +16,17 @@
 // SetContinuousPhysics(false)); --velocity-iterations / --position-iterations change the
 // iteration counts, --variant only labels the JSON line (tools/bench/peers uses it).
 //
+// The joint scenes of tools/scenes/joint_scenes.h, from the same integers: joint_grid
+// (count = columns and rows, default 40: circles of radius 0.4 m, 1 m apart, the top row
+// static, b2RevoluteJoint to the body above and the body on the left) and chain (count =
+// chains, default 20, of 40 links pinned by b2RevoluteJoint at (2j, 2j) and starting
+// horizontal). Box2D 2.4.1 has no capsule: a link is a box as long and wide as the
+// capsule (1.25 x 0.25 m) whose mass and rotational inertia are set to the capsule's
+// (b2Body::SetMassData), so the dynamics are the same. Every shape has category 2 and mask
+// ~2 (nothing collides); sleeping is always off in these scenes. They report the same
+// sanity figure as pogon-bench: sag_m (the grid's bottom row, mean drop) or stretch_m (the
+// largest over the chains of the sum of anchor gaps), and worst_gap_m.
+//
 // Method (as pogon-bench): build `repeat` times (default 3), time `steps` steps (default
 // 600 for pyramid/stack, 300 for rain) with clock_gettime(CLOCK_MONOTONIC) around the
 // stepping only, report the median of the per-run mean ms per step. The same metrics and
@@ -55,7 +66,12 @@ struct Result {
     bool continuous = true;
     uint32_t velocity_iterations = 8, position_iterations = 3;
     std::string variant;
+    uint32_t joints = 0;
+    std::string figure; // joint scenes: "sag" or "stretch"
+    double figure_m = 0, worst_gap_m = 0;
 };
+
+bool is_joint_scene(const std::string &scene) { return scene == "joint_grid" || scene == "chain"; }
 
 double now_ms()
 {
@@ -88,6 +104,137 @@ void add_wall(b2World *w, float cx, float cy, float width, float height, float f
     fd.density = 0.0f;
     fd.friction = friction;
     b->CreateFixture(&fd);
+}
+
+// ---- joint scenes ------------------------------------------------------------------------
+const int32_t GRID_RADIUS = 26214; // 0.4 m in Q16.16, as tools/scenes/joint_scenes.c
+const uint32_t CHAIN_LINKS = 40;
+const double LINK_LENGTH = 1.0, LINK_RADIUS = 0.125;
+const uint16 NO_COLLISION_CATEGORY = 0x0002;
+
+void joint(b2World *w, b2Body *a, b2Vec2 anchor_a, b2Body *b, b2Vec2 anchor_b)
+{
+    b2RevoluteJointDef jd;
+    jd.bodyA = a;
+    jd.bodyB = b;
+    jd.localAnchorA = anchor_a;
+    jd.localAnchorB = anchor_b;
+    jd.referenceAngle = 0.0f;
+    w->CreateJoint(&jd);
+}
+
+// The bodies of a joint scene in the order tools/scenes/joint_scenes.c makes them (the
+// grid row by row, its static top row included; the chains link by link), for the sanity
+// figure. Returns the last body made.
+b2Body *build_joints(b2World *w, const std::string &scene, uint32_t count, std::vector<b2Body *> *bodies, uint32_t *dynamic,
+                     uint32_t *joints)
+{
+    b2FixtureDef fd;
+    fd.density = 1.0f;
+    fd.friction = 0.6f;
+    fd.filter.categoryBits = NO_COLLISION_CATEGORY;
+    fd.filter.maskBits = (uint16)~NO_COLLISION_CATEGORY;
+    *dynamic = 0;
+    *joints = 0;
+    if (scene == "joint_grid") {
+        b2CircleShape c;
+        c.m_radius = q16(GRID_RADIUS);
+        fd.shape = &c;
+        for (uint32_t row = 0; row < count; ++row) {
+            for (uint32_t col = 0; col < count; ++col) {
+                b2BodyDef bd;
+                bd.type = row == 0 ? b2_staticBody : b2_dynamicBody;
+                bd.position.Set((float)col, -(float)row);
+                b2Body *b = w->CreateBody(&bd);
+                b->CreateFixture(&fd);
+                bodies->push_back(b);
+                if (row == 0) continue;
+                joint(w, (*bodies)[(row - 1) * count + col], b2Vec2(0.0f, -0.5f), b, b2Vec2(0.0f, 0.5f));
+                ++*joints;
+                if (col > 0) {
+                    joint(w, (*bodies)[row * count + col - 1], b2Vec2(0.5f, 0.0f), b, b2Vec2(-0.5f, 0.0f));
+                    ++*joints;
+                }
+                ++*dynamic;
+            }
+        }
+    } else {
+        b2BodyDef pins_def;
+        b2Body *pins = w->CreateBody(&pins_def); // static, no fixtures
+        b2PolygonShape box;
+        box.SetAsBox((float)(0.5 * LINK_LENGTH + LINK_RADIUS), (float)LINK_RADIUS);
+        fd.shape = &box;
+        // the capsule's mass and inertia about its centre (as src/mass.c): area 2rL + pi r^2,
+        // I = rL^3/6 + 2r^3 L + pi r^2 (r^2/2 + L^2/4), density 1
+        const double pi = 3.14159265358979323846, r = LINK_RADIUS, l = LINK_LENGTH;
+        b2MassData md;
+        md.mass = (float)(2.0 * r * l + pi * r * r);
+        md.center.SetZero();
+        md.I = (float)(r * l * l * l / 6.0 + 2.0 * r * r * r * l + pi * r * r * (r * r / 2.0 + l * l / 4.0));
+        for (uint32_t j = 0; j < count; ++j) {
+            float pin = 2.0f * (float)j;
+            for (uint32_t i = 0; i < CHAIN_LINKS; ++i) {
+                b2BodyDef bd;
+                bd.type = b2_dynamicBody;
+                bd.position.Set(pin + (float)i * (float)LINK_LENGTH + 0.5f * (float)LINK_LENGTH, pin);
+                b2Body *b = w->CreateBody(&bd);
+                b->CreateFixture(&fd);
+                b->SetMassData(&md);
+                if (i == 0)
+                    joint(w, pins, b2Vec2(pin, pin), b, b2Vec2(-0.5f * (float)LINK_LENGTH, 0.0f));
+                else
+                    joint(w, bodies->back(), b2Vec2(0.5f * (float)LINK_LENGTH, 0.0f), b, b2Vec2(-0.5f * (float)LINK_LENGTH, 0.0f));
+                ++*joints;
+                bodies->push_back(b);
+                ++*dynamic;
+            }
+        }
+    }
+    return bodies->empty() ? nullptr : bodies->back();
+}
+
+double gap(b2Vec2 a, b2Vec2 b)
+{
+    double dx = (double)a.x - (double)b.x, dy = (double)a.y - (double)b.y;
+    return std::sqrt(dx * dx + dy * dy);
+}
+
+// The same figures as pg_joint_scene_sanity (tools/scenes/joint_scenes.c).
+void joint_sanity(const std::string &scene, uint32_t count, const std::vector<b2Body *> &bodies, Result *res)
+{
+    res->worst_gap_m = 0.0;
+    res->figure_m = 0.0;
+    if (scene == "joint_grid") {
+        double drop = 0.0;
+        res->figure = "sag";
+        for (uint32_t row = 1; row < count; ++row) {
+            for (uint32_t col = 0; col < count; ++col) {
+                const b2Body *b = bodies[row * count + col];
+                double g = gap(bodies[(row - 1) * count + col]->GetWorldPoint(b2Vec2(0.0f, -0.5f)), b->GetWorldPoint(b2Vec2(0.0f, 0.5f)));
+                res->worst_gap_m = std::max(res->worst_gap_m, g);
+                if (col > 0) {
+                    g = gap(bodies[row * count + col - 1]->GetWorldPoint(b2Vec2(0.5f, 0.0f)), b->GetWorldPoint(b2Vec2(-0.5f, 0.0f)));
+                    res->worst_gap_m = std::max(res->worst_gap_m, g);
+                }
+                if (row == count - 1) drop += -(double)(count - 1) - (double)b->GetPosition().y;
+            }
+        }
+        res->figure_m = count > 1 ? drop / (double)count : 0.0;
+        return;
+    }
+    res->figure = "stretch";
+    for (uint32_t j = 0; j < count; ++j) {
+        double stretch = 0.0;
+        for (uint32_t i = 0; i < CHAIN_LINKS; ++i) {
+            const b2Body *b = bodies[j * CHAIN_LINKS + i];
+            b2Vec2 from = i == 0 ? b2Vec2(2.0f * (float)j, 2.0f * (float)j)
+                                 : bodies[j * CHAIN_LINKS + i - 1]->GetWorldPoint(b2Vec2(0.5f * (float)LINK_LENGTH, 0.0f));
+            double g = gap(from, b->GetWorldPoint(b2Vec2(-0.5f * (float)LINK_LENGTH, 0.0f)));
+            stretch += g;
+            res->worst_gap_m = std::max(res->worst_gap_m, g);
+        }
+        res->figure_m = std::max(res->figure_m, stretch);
+    }
 }
 
 // Builds the scene; returns the top body (the last one created).
@@ -149,8 +296,8 @@ b2Body *build(b2World *w, const std::string &scene, uint32_t count, uint32_t *bo
 
 bool run(const std::string &scene, const Options &o, uint32_t count_override, Result *res)
 {
-    bool rain = scene == "rain";
-    uint32_t count = count_override ? count_override : o.count ? o.count : rain ? 1000u : 20u;
+    bool rain = scene == "rain", joints = is_joint_scene(scene);
+    uint32_t count = count_override ? count_override : o.count ? o.count : rain ? 1000u : scene == "joint_grid" ? 40u : 20u;
     uint32_t steps = o.steps ? o.steps : rain ? 300u : 600u;
     uint32_t repeat = o.repeat ? o.repeat : 3u;
     std::vector<double> runs;
@@ -158,17 +305,19 @@ bool run(const std::string &scene, const Options &o, uint32_t count_override, Re
     res->count = count;
     res->steps = steps;
     res->repeat = repeat;
-    res->stands = !rain;
-    res->sleeping = !o.no_sleep;
+    res->stands = !rain && !joints;
+    res->sleeping = !o.no_sleep && !joints; // the joint scenes time awake joints
     res->continuous = !o.no_continuous;
     res->velocity_iterations = o.velocity_iterations;
     res->position_iterations = o.position_iterations;
     res->variant = o.variant;
     for (uint32_t r = 0; r < repeat; ++r) {
         b2World *w = new b2World(b2Vec2(0.0f, -10.0f));
-        w->SetAllowSleeping(!o.no_sleep);
+        w->SetAllowSleeping(res->sleeping);
         w->SetContinuousPhysics(!o.no_continuous);
-        b2Body *top = build(w, scene, count, &res->bodies);
+        std::vector<b2Body *> scene_bodies;
+        b2Body *top = joints ? build_joints(w, scene, count, &scene_bodies, &res->bodies, &res->joints)
+                             : build(w, scene, count, &res->bodies);
         if (top == nullptr) {
             delete w;
             return false;
@@ -183,6 +332,7 @@ bool run(const std::string &scene, const Options &o, uint32_t count_override, Re
         res->dy = (double)p.y - (double)start.y;
         res->disp = std::sqrt(res->dx * res->dx + res->dy * res->dy);
         res->angle_deg = (double)top->GetAngle() * (180.0 / 3.14159265358979323846);
+        if (joints) joint_sanity(scene, count, scene_bodies, res);
         res->awake = 0;
         for (b2Body *b = w->GetBodyList(); b != nullptr; b = b->GetNext())
             if (b->GetType() == b2_dynamicBody && b->IsAwake()) ++res->awake;
@@ -214,6 +364,8 @@ void print_json(const Result &r)
     if (r.stands)
         std::printf("\"top_displacement_m\":%.6f,\"dx_m\":%.6f,\"dy_m\":%.6f,\"angle_deg\":%.4f,", r.disp, r.dx, r.dy,
                     r.angle_deg);
+    if (!r.figure.empty())
+        std::printf("\"joints\":%u,\"%s_m\":%.6f,\"worst_gap_m\":%.6f,", r.joints, r.figure.c_str(), r.figure_m, r.worst_gap_m);
     std::printf("\"awake_bodies\":%u,\"contacts\":%u,\"touching\":%u}\n", r.awake, r.contacts, r.touching);
     std::fflush(stdout);
 }
@@ -229,6 +381,8 @@ void print_row(const Result &r)
     std::printf("| box2d-2.4.1 | %s | %u | %u | %u | %.4f | %.1f | ", r.scene.c_str(), r.count, r.bodies, r.steps, r.ms, r.sps);
     if (r.stands)
         std::printf("%.5f | %+.5f | %+.5f | %+.3f | ", r.disp, r.dx, r.dy, r.angle_deg);
+    else if (!r.figure.empty())
+        std::printf("%s %.5f m, worst gap %.5f m | - | - | - | ", r.figure.c_str(), r.figure_m, r.worst_gap_m);
     else
         std::printf("- | - | - | - | ");
     std::printf("%u |\n", r.awake);
@@ -275,18 +429,18 @@ int main(int argc, char **argv)
         } else if (a[0] != '-' && mode.empty()) {
             mode = a;
         } else {
-            std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n"
+            std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|joint_grid|chain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n"
                          "         [--no-continuous] [--velocity-iterations N] [--position-iterations N] [--variant LABEL]\n");
             return 2;
         }
     }
     std::vector<std::pair<std::string, uint32_t>> todo;
-    if (mode == "pyramid" || mode == "stack" || mode == "rain") {
+    if (mode == "pyramid" || mode == "stack" || mode == "rain" || is_joint_scene(mode)) {
         todo.push_back({mode, 0u});
     } else if (mode == "all") {
         todo = {{"pyramid", 20u}, {"stack", 20u}, {"rain", 1000u}, {"rain", 2000u}, {"rain", 4000u}, {"rain", 8000u}, {"rain", 16000u}};
     } else {
-        std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n"
+        std::fprintf(stderr, "usage: pogon-bench-box2d pyramid|stack|rain|joint_grid|chain|all [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]\n"
                          "         [--no-continuous] [--velocity-iterations N] [--position-iterations N] [--variant LABEL]\n");
         return 2;
     }

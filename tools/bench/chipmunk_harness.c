@@ -33,9 +33,22 @@
  *             (cpSpaceUseSpatialHash, cell 1 m = the largest circle's diameter, 10 cells
  *             per body), sleeping off (nothing settles in the measured 5 s; on, it costs
  *             about 10 %), 10 iterations. collisionSlop stays 0.1: 0.01 gave the same
- *             pyramid to six digits and no measurable change in rain. The single-threaded
+ *             pyramid to six digits and no measurable change in rain. joint_grid: 60
+ *             iterations (the fewest that keep the grid from exploding; see below); chain:
+ *             as the defaults. The single-threaded
  *             cpSpace; the threaded cpHastySpace is left out because pogon steps on one
  *             thread.
+ * The joint scenes of tools/scenes/joint_scenes.h, from the same integers: joint_grid
+ * (count = columns and rows, default 40: circles of radius 0.4 m, 1 m apart, the top row
+ * static bodies, cpPivotJoint to the body above and the body on the left) and chain
+ * (count = chains, default 20, of 40 links pinned by cpPivotJoint to the space's static
+ * body at (2j, 2j) and starting horizontal). A link is Chipmunk's capsule, a segment shape
+ * of radius 0.125 m, with the capsule's exact mass and moment (cpMomentForSegment
+ * approximates it by a box). Every shape has category 2 and mask ~2, so nothing collides,
+ * and sleeping is off in both variants. The joints keep Chipmunk's defaults (errorBias
+ * (1 - 0.1)^60, maxBias and maxForce infinite). They report the same sanity figure as
+ * pogon-bench: sag_m (the grid's bottom row, mean drop) or stretch_m (the largest over the
+ * chains of the sum of anchor gaps), and worst_gap_m.
  * The single options override the variant: --iterations N, --hash DIM (spatial hash with
  * cell DIM m), --tree (bounding-box tree), --slop M, --sleep / --no-sleep.
  *
@@ -83,7 +96,12 @@ typedef struct result {
     int stands;
     double disp, dx, dy, angle_deg;
     uint32_t awake, touching;
+    uint32_t joints;
+    const char *figure; /* joint scenes: "sag" or "stretch" */
+    double figure_m, worst_gap_m;
 } result;
+
+static int is_joint_scene(const char *scene) { return strcmp(scene, "joint_grid") == 0 || strcmp(scene, "chain") == 0; }
 
 static double now_ms(void)
 {
@@ -184,6 +202,117 @@ static cpBody *build(cpSpace *space, const char *scene, uint32_t count, uint32_t
     return top;
 }
 
+/* ---- joint scenes ------------------------------------------------------------------------ */
+#define GRID_RADIUS 26214 /* 0.4 m in Q16.16, as tools/scenes/joint_scenes.c */
+#define CHAIN_LINKS 40u
+static const double LINK_LENGTH = 1.0, LINK_RADIUS = 0.125;
+#define NO_COLLISION_CATEGORY 2u
+
+static void no_collision(cpShape *s)
+{
+    cpShapeSetFilter(s, cpShapeFilterNew(CP_NO_GROUP, NO_COLLISION_CATEGORY, ~(cpBitmask)NO_COLLISION_CATEGORY));
+}
+
+static void pivot(cpSpace *space, cpBody *a, cpVect anchor_a, cpBody *b, cpVect anchor_b)
+{
+    cpSpaceAddConstraint(space, cpPivotJointNew2(a, b, anchor_a, anchor_b));
+}
+
+/* The bodies in the order tools/scenes/joint_scenes.c makes them (the grid row by row,
+ * its static top row included; the chains link by link) into `bodies` (room for count^2
+ * or count x 40). Returns the last body made. */
+static cpBody *build_joints(cpSpace *space, const char *scene, uint32_t count, cpBody **bodies, result *res)
+{
+    uint32_t made = 0, row, col, j, i;
+    res->bodies = 0;
+    res->joints = 0;
+    if (strcmp(scene, "joint_grid") == 0) {
+        double radius = q16(GRID_RADIUS), mass = DENSITY * PI * radius * radius;
+        for (row = 0; row < count; ++row) {
+            for (col = 0; col < count; ++col) {
+                cpBody *b = row == 0 ? cpBodyNewStatic() : cpBodyNew(mass, cpMomentForCircle(mass, 0.0, radius, cpvzero));
+                cpShape *s;
+                cpSpaceAddBody(space, b);
+                cpBodySetPosition(b, cpv((double)col, -(double)row));
+                s = cpSpaceAddShape(space, cpCircleShapeNew(b, radius, cpvzero));
+                no_collision(s);
+                bodies[made++] = b;
+                if (row == 0) continue;
+                pivot(space, bodies[(row - 1) * count + col], cpv(0.0, -0.5), b, cpv(0.0, 0.5));
+                res->joints += 1u;
+                if (col > 0) {
+                    pivot(space, bodies[row * count + col - 1], cpv(0.5, 0.0), b, cpv(-0.5, 0.0));
+                    res->joints += 1u;
+                }
+                res->bodies += 1u;
+            }
+        }
+    } else {
+        /* the capsule's mass and inertia about its centre (as src/mass.c): area 2rL + pi r^2,
+         * I = rL^3/6 + 2r^3 L + pi r^2 (r^2/2 + L^2/4), density 1 */
+        double r = LINK_RADIUS, l = LINK_LENGTH;
+        double mass = DENSITY * (2.0 * r * l + PI * r * r);
+        double moment = DENSITY * (r * l * l * l / 6.0 + 2.0 * r * r * r * l + PI * r * r * (r * r / 2.0 + l * l / 4.0));
+        for (j = 0; j < count; ++j) {
+            double pin = 2.0 * (double)j;
+            for (i = 0; i < CHAIN_LINKS; ++i) {
+                cpBody *b = cpSpaceAddBody(space, cpBodyNew(mass, moment));
+                cpShape *s;
+                cpBodySetPosition(b, cpv(pin + (double)i * l + 0.5 * l, pin));
+                s = cpSpaceAddShape(space, cpSegmentShapeNew(b, cpv(-0.5 * l, 0.0), cpv(0.5 * l, 0.0), r));
+                no_collision(s);
+                if (i == 0) pivot(space, cpSpaceGetStaticBody(space), cpv(pin, pin), b, cpv(-0.5 * l, 0.0));
+                else pivot(space, bodies[made - 1u], cpv(0.5 * l, 0.0), b, cpv(-0.5 * l, 0.0));
+                res->joints += 1u;
+                bodies[made++] = b;
+                res->bodies += 1u;
+            }
+        }
+    }
+    return made > 0 ? bodies[made - 1u] : NULL;
+}
+
+static double gap(cpVect a, cpVect b) { return cpvlength(cpvsub(a, b)); }
+
+/* The same figures as pg_joint_scene_sanity (tools/scenes/joint_scenes.c). */
+static void joint_sanity(const char *scene, uint32_t count, cpBody *const *bodies, result *res)
+{
+    uint32_t row, col, j, i;
+    res->worst_gap_m = 0.0;
+    res->figure_m = 0.0;
+    if (strcmp(scene, "joint_grid") == 0) {
+        double drop = 0.0;
+        res->figure = "sag";
+        for (row = 1; row < count; ++row) {
+            for (col = 0; col < count; ++col) {
+                cpBody *b = bodies[row * count + col];
+                double g = gap(cpBodyLocalToWorld(bodies[(row - 1) * count + col], cpv(0.0, -0.5)), cpBodyLocalToWorld(b, cpv(0.0, 0.5)));
+                if (g > res->worst_gap_m) res->worst_gap_m = g;
+                if (col > 0) {
+                    g = gap(cpBodyLocalToWorld(bodies[row * count + col - 1], cpv(0.5, 0.0)), cpBodyLocalToWorld(b, cpv(-0.5, 0.0)));
+                    if (g > res->worst_gap_m) res->worst_gap_m = g;
+                }
+                if (row == count - 1) drop += -(double)(count - 1) - cpBodyGetPosition(b).y;
+            }
+        }
+        res->figure_m = count > 1 ? drop / (double)count : 0.0;
+        return;
+    }
+    res->figure = "stretch";
+    for (j = 0; j < count; ++j) {
+        double stretch = 0.0;
+        for (i = 0; i < CHAIN_LINKS; ++i) {
+            cpBody *b = bodies[j * CHAIN_LINKS + i];
+            cpVect from = i == 0 ? cpv(2.0 * (double)j, 2.0 * (double)j)
+                                 : cpBodyLocalToWorld(bodies[j * CHAIN_LINKS + i - 1], cpv(0.5 * LINK_LENGTH, 0.0));
+            double g = gap(from, cpBodyLocalToWorld(b, cpv(-0.5 * LINK_LENGTH, 0.0)));
+            stretch += g;
+            if (g > res->worst_gap_m) res->worst_gap_m = g;
+        }
+        if (stretch > res->figure_m) res->figure_m = stretch;
+    }
+}
+
 /* ---- end-of-run counts ------------------------------------------------------------------ */
 typedef struct counts {
     uint32_t awake;
@@ -246,12 +375,14 @@ static settings pick_settings(const char *scene, const options *o)
     settings s;
     int best = strcmp(o->variant, "best") == 0;
     int rain = strcmp(scene, "rain") == 0;
-    s.iterations = 10;
-    s.sleep = best && !rain;
+    /* the grid of pivots explodes at 10, 20 and 40 iterations (its bottom row thousands of
+     * metres off within 600 steps) and drifts 0.7 m at 50: 60 is the fewest that hold it */
+    s.iterations = best && strcmp(scene, "joint_grid") == 0 ? 60 : 10;
+    s.sleep = best && !rain && !is_joint_scene(scene);
     s.hash_dim = best && rain ? 1.0 : 0.0;
     s.slop = 0.1;
     if (o->iterations > 0) s.iterations = o->iterations;
-    if (o->sleep >= 0) s.sleep = o->sleep;
+    if (o->sleep >= 0 && !is_joint_scene(scene)) s.sleep = o->sleep; /* the joint scenes time awake joints */
     if (o->hash_dim >= 0.0) s.hash_dim = o->hash_dim;
     if (o->slop >= 0.0) s.slop = o->slop;
     return s;
@@ -259,8 +390,8 @@ static settings pick_settings(const char *scene, const options *o)
 
 static int run(const char *scene, const options *o, uint32_t count_override, result *res)
 {
-    int rain = strcmp(scene, "rain") == 0;
-    uint32_t count = count_override ? count_override : o->count ? o->count : rain ? 1000u : 20u;
+    int rain = strcmp(scene, "rain") == 0, joints = is_joint_scene(scene);
+    uint32_t count = count_override ? count_override : o->count ? o->count : rain ? 1000u : strcmp(scene, "joint_grid") == 0 ? 40u : 20u;
     uint32_t steps = o->steps ? o->steps : rain ? 300u : 600u;
     uint32_t repeat = o->repeat ? o->repeat : 3u, r, i;
     double runs[MAX_REPEAT];
@@ -270,7 +401,7 @@ static int run(const char *scene, const options *o, uint32_t count_override, res
     res->count = count;
     res->steps = steps;
     res->repeat = repeat;
-    res->stands = !rain;
+    res->stands = !rain && !joints;
     res->s = pick_settings(scene, o);
     for (r = 0; r < repeat; ++r) {
         cpSpace *space = cpSpaceNew();
@@ -278,14 +409,21 @@ static int run(const char *scene, const options *o, uint32_t count_override, res
         cpVect start, p;
         double t0, t1;
         counts c = {0u, 0.0};
+        cpBody **bodies = NULL;
         cpSpaceSetGravity(space, cpv(0.0, -10.0));
         cpSpaceSetIterations(space, res->s.iterations);
         cpSpaceSetCollisionSlop(space, res->s.slop);
         if (res->s.sleep) cpSpaceSetSleepTimeThreshold(space, 0.5);
         /* cell count: Chipmunk's advice is about 10 x the number of objects */
         if (res->s.hash_dim > 0.0) cpSpaceUseSpatialHash(space, res->s.hash_dim, (int)(10u * count + 1000u));
-        top = build(space, scene, count, &res->bodies);
+        if (joints) {
+            bodies = (cpBody **)malloc(sizeof *bodies * (size_t)count * (strcmp(scene, "chain") == 0 ? CHAIN_LINKS : count));
+            top = bodies != NULL ? build_joints(space, scene, count, bodies, res) : NULL;
+        } else {
+            top = build(space, scene, count, &res->bodies);
+        }
         if (top == NULL) {
+            free(bodies);
             free_space(space);
             return 0;
         }
@@ -299,6 +437,8 @@ static int run(const char *scene, const options *o, uint32_t count_override, res
         res->dy = p.y - start.y;
         res->disp = sqrt(res->dx * res->dx + res->dy * res->dy);
         res->angle_deg = cpBodyGetAngle(top) * (180.0 / PI);
+        if (joints) joint_sanity(scene, count, bodies, res);
+        free(bodies);
         cpSpaceEachBody(space, count_body, &c);
         res->awake = c.awake;
         res->touching = (uint32_t)(c.touching + 0.5);
@@ -324,6 +464,8 @@ static void print_json(const result *r, const char *variant)
     if (r->stands)
         printf("\"top_displacement_m\":%.6f,\"dx_m\":%.6f,\"dy_m\":%.6f,\"angle_deg\":%.4f,", r->disp, r->dx, r->dy,
                r->angle_deg);
+    if (r->figure != NULL)
+        printf("\"joints\":%u,\"%s_m\":%.6f,\"worst_gap_m\":%.6f,", r->joints, r->figure, r->figure_m, r->worst_gap_m);
     printf("\"awake_bodies\":%u,\"touching\":%u}\n", r->awake, r->touching);
     fflush(stdout);
 }
@@ -342,6 +484,8 @@ static void print_row(const result *r, const char *variant)
            r->s.hash_dim > 0.0 ? "spatial hash" : "bbtree", r->s.sleep ? "on" : "off", r->ms, r->sps);
     if (r->stands)
         printf("%.5f | %+.5f | %+.5f | %+.3f | ", r->disp, r->dx, r->dy, r->angle_deg);
+    else if (r->figure != NULL)
+        printf("%s %.5f m, worst gap %.5f m | - | - | - | ", r->figure, r->figure_m, r->worst_gap_m);
     else
         printf("- | - | - | - | ");
     printf("%u |\n", r->awake);
@@ -371,14 +515,15 @@ static int parse_double(const char *text, double *out)
 
 static void usage(FILE *f)
 {
-    fprintf(f, "usage: pogon-bench-chipmunk pyramid|stack|rain|all [--count N] [--steps N] [--repeat R] [--json]\n"
+    fprintf(f, "usage: pogon-bench-chipmunk pyramid|stack|rain|joint_grid|chain|all [--count N] [--steps N] [--repeat R] [--json]\n"
                "         [--variant defaults|best] [--sleep|--no-sleep] [--iterations N] [--hash DIM|--tree] [--slop M]\n");
 }
 
 int main(int argc, char **argv)
 {
     static const struct { const char *scene; uint32_t count; } all[] = {
-        {"pyramid", 20u}, {"stack", 20u}, {"rain", 1000u}, {"rain", 2000u}, {"rain", 4000u}, {"rain", 8000u}, {"rain", 16000u}};
+        {"pyramid", 20u}, {"stack", 20u}, {"rain", 1000u}, {"rain", 2000u}, {"rain", 4000u}, {"rain", 8000u}, {"rain", 16000u},
+        {"joint_grid", 40u}, {"chain", 20u}};
     options o;
     const char *mode = NULL;
     size_t k;

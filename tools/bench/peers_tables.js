@@ -1,6 +1,6 @@
 // peers_tables.js — the markdown tables of a tools/bench/peers run, from its results file
 // (one JSON object a line). Renders only; never runs a benchmark.
-//   node tools/bench/peers_tables.js RESULTS.jsonl [BUDGET] [--section headline|pyramid|scaling]
+//   node tools/bench/peers_tables.js RESULTS.jsonl [BUDGET] [--section headline|pyramid|scaling|joints]
 // Each section ends with the date, machine and command of the run, so a table copied into
 // a document (tools/docs/regions.js) carries them.
 'use strict';
@@ -9,8 +9,8 @@ const argv = process.argv.slice(2);
 let section = '';
 const si = argv.indexOf('--section');
 if (si >= 0) { section = argv[si + 1] || ''; argv.splice(si, 2); }
-if (!['', 'headline', 'pyramid', 'scaling'].includes(section)) {
-  process.stderr.write(`peers_tables: unknown section '${section}' (headline, pyramid or scaling)\n`);
+if (!['', 'headline', 'pyramid', 'scaling', 'joints'].includes(section)) {
+  process.stderr.write(`peers_tables: unknown section '${section}' (headline, pyramid, scaling or joints)\n`);
   process.exit(2);
 }
 const [file] = argv;
@@ -171,6 +171,46 @@ p(`All runs from the drop; rain runs 300 steps unless a cell says fewer: a run p
   'log ms against log N over the full-length points.');
 p(`One run per cell from 2 000 circles on, so single cells are noisy.`);
 p(measured());
+}
+if (section === '') {
+  p('');
+  p('### joint scenes: joint_grid (40 × 40) and chain (20 chains of 40 links)');
+  p('');
+}
+if (section === '' || section === 'joints') {
+  // the sanity figures of tools/scenes/joint_scenes.h: a rigid solver keeps both near 0
+  const holds = (r) => {
+    const figure = r.scene === 'joint_grid' ? r.sag_m : r.stretch_m;
+    if (figure === undefined || r.worst_gap_m === undefined) return '';
+    if (Math.abs(figure) < 1 && r.worst_gap_m < 0.1) return 'yes';
+    return r.worst_gap_m >= 1 ? 'no, blew apart' : 'no';
+  };
+  const fmtM = (v) => (v === undefined ? '' : Math.abs(v) >= 100 ? v.toExponential(1) : Math.abs(v) >= 0.01 || v === 0
+    ? v.toFixed(3) : v.toExponential(1));
+  const joints = res.filter((x) => x.scene === 'joint_grid' || x.scene === 'chain');
+  if (joints.length === 0) {
+    p('No joint scenes in this results file: `tools/bench/peers` (or `tools/bench/peers --joints-only`) runs them.');
+  } else {
+    p('| engine | variant | settings | scene | bodies | joints | ms/step | × pogon native | holds? | sag or stretch m | worst joint gap m |');
+    p('| --- | --- | --- | --- | ---: | ---: | ---: | ---: | --- | ---: | ---: |');
+    for (const scene of ['joint_grid', 'chain']) {
+      for (const r of joints.filter((x) => x.scene === scene)) {
+        const b = base(r);
+        p(`| ${engineName(r)} | ${variantName(r)} | ${settings(r)} | ${scene} | ${r.bodies} | ${r.joints ?? ''} | ` +
+          `${fmtMs(r.ms_per_step)} | ${b ? fmtRatio(r.ms_per_step / b.ms_per_step) : '-'} | ${holds(r)} | ` +
+          `${fmtM(scene === 'joint_grid' ? r.sag_m : r.stretch_m)} | ${fmtM(r.worst_gap_m)} |`);
+      }
+    }
+    const reps = joints.find((x) => x.peer === 'pogon-native');
+    p('');
+    p(`600 steps (10 s), sleeping off in every engine, nothing collides; median of ${reps ? reps.repeat : '?'} ` +
+      `run${reps && reps.repeat === 1 ? '' : 's'}. ` +
+      (maxRounds > 1 ? `The joint scenes ran ${maxRounds} rounds round every engine; each cell is the fastest of its rounds. ` : '') +
+      'Sag: how far the grid\'s bottom row came down (mean); stretch: the largest over the chains of the sum of the ' +
+      'distances between each joint\'s two anchors; worst joint gap: the largest such distance in the scene, all at the ' +
+      'end of the run. "Holds" when the figure is under 1 m and no joint is 0.1 m apart.');
+    p(measured());
+  }
 }
 if (failed.length)
   p('Failed: ' + failed.map((f) => `${f.peer} ${f.peer_variant} ${f.scene} ${f.count}`).join('; '));

@@ -3,7 +3,11 @@
  * Usage:
  *   pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--json] [--no-sleep]
  *       SCENE is pyramid (count = rows, default 20: 210 boxes), stack (count = boxes,
- *       default 20) or rain (count = circles, default 1000).
+ *       default 20), rain (count = circles, default 1000), joint_grid (count = columns
+ *       and rows, default 40: 1 560 bodies, 3 081 revolute joints) or chain (count =
+ *       chains of 40 capsule links, default 20); tools/scenes/joint_scenes.h defines the
+ *       last two. The joint scenes always run with sleeping off and report a sanity
+ *       figure: the grid's sag and the chains' stretch.
  *   pogon-bench all       pyramid, stack, rain at 1000, 2000, 4000, 8000, 16000, then the
  *                         rain scaling table and the fitted exponent of ms ~ N^k.
  *   pogon-bench effects [SCENE]
@@ -36,7 +40,7 @@
  * takes `warmup` untimed steps (0 unless stated), then times `steps` steps with
  * clock_gettime(CLOCK_MONOTONIC) around the stepping only; a run's figure is its mean ms
  * per step and the reported figure is the median over `repeat` runs (default 3). Steps
- * default to 600 (pyramid, stack) and 300 (rain).
+ * default to 600 (pyramid, stack, joint_grid, chain) and 300 (rain).
  *
  * For the scenes that should stand (pyramid, stack) the top box's displacement from
  * where it started is reported: distance, dx, dy and its angle in degrees, and, with
@@ -56,6 +60,7 @@
 
 #include "pogon/pogon.h"
 #include "pogon/replay.h"
+#include "joint_scenes.h"
 #include "scenes.h"
 
 #define DEFAULT_REPEAT 3u
@@ -86,6 +91,8 @@ typedef struct result {
     double top_disp, dx, dy, angle_deg;
     uint32_t awake_end, contacts_end, touching_end, capacity_misses, speed_clamps;
     uint32_t asleep_step;   /* stands, sleeping on: first step after which nothing was awake */
+    uint32_t joints;        /* joint scenes: how many joints */
+    pg_joint_sanity sanity; /* joint scenes: sag or stretch at the end (figure NULL otherwise) */
     uint32_t substeps;      /* the solver settings the run used */
     pg_fix contact_hertz, damping_ratio;
     size_t memory_bytes;
@@ -117,18 +124,53 @@ static int cmp_double(const void *a, const void *b)
 
 static int is_scene(const char *s)
 {
-    return strcmp(s, "pyramid") == 0 || strcmp(s, "stack") == 0 || strcmp(s, "rain") == 0;
+    return strcmp(s, "pyramid") == 0 || strcmp(s, "stack") == 0 || strcmp(s, "rain") == 0 || pg_is_joint_scene(s);
 }
 
-static uint32_t default_count(const char *scene) { return strcmp(scene, "rain") == 0 ? 1000u : 20u; }
+static uint32_t default_count(const char *scene)
+{
+    if (pg_is_joint_scene(scene)) return pg_joint_scene_default_count(scene);
+    return strcmp(scene, "rain") == 0 ? 1000u : 20u;
+}
 static uint32_t default_steps(const char *scene) { return strcmp(scene, "rain") == 0 ? 300u : 600u; }
-static int scene_stands(const char *scene) { return strcmp(scene, "rain") != 0; }
+static int scene_stands(const char *scene) { return strcmp(scene, "rain") != 0 && !pg_is_joint_scene(scene); }
 
+/* dynamic bodies */
 static uint32_t scene_bodies(const char *scene, uint32_t count)
 {
     if (strcmp(scene, "pyramid") == 0) return count * (count + 1u) / 2u;
+    if (strcmp(scene, "joint_grid") == 0) return count * (count - 1u);
+    if (strcmp(scene, "chain") == 0) return count * 40u;
     return count;
 }
+
+/* A built scene of either kind: the world, and for the standing scenes the top body. */
+typedef struct built_scene {
+    pg_scene plain;
+    pg_joint_scene joints;
+    int is_joint;
+} built_scene;
+
+static pg_world_def any_world_def(const char *scene, uint32_t count)
+{
+    return pg_is_joint_scene(scene) ? pg_joint_scene_world_def(scene, count) : pg_scene_world_def(scene, count);
+}
+
+static size_t any_memory_size(const char *scene, uint32_t count, const pg_world_def *def)
+{
+    return pg_is_joint_scene(scene) ? pg_joint_scene_memory_size(scene, count, def) : pg_scene_memory_size(scene, count, def);
+}
+
+static pg_result any_build(const char *scene, uint32_t count, const pg_world_def *def, void *memory, size_t size,
+                           built_scene *out)
+{
+    memset(out, 0, sizeof *out);
+    out->is_joint = pg_is_joint_scene(scene);
+    if (out->is_joint) return pg_joint_scene_build(scene, count, def, memory, size, &out->joints);
+    return pg_scene_build(scene, count, def, memory, size, &out->plain);
+}
+
+static pg_world *any_world(const built_scene *b) { return b->is_joint ? b->joints.world : b->plain.world; }
 
 static int parse_u32(const char *text, uint32_t *out)
 {
@@ -155,7 +197,7 @@ static uint32_t find_asleep_step(const char *scene, uint32_t count, uint32_t ste
     uint32_t i, found = 0;
     void *memory = malloc(size);
     if (memory == NULL) return 0;
-    if (pg_scene_build(scene, count, def, memory, size, &sc) == PG_OK) {
+    if (!pg_is_joint_scene(scene) && pg_scene_build(scene, count, def, memory, size, &sc) == PG_OK) {
         for (i = 1; i <= steps && found == 0; ++i) {
             if (pg_world_step(sc.world) != PG_OK) break;
             if (pg_world_get_stats(sc.world).awake_body_count == 0) found = i;
@@ -186,9 +228,11 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
     res->steps = steps;
     res->warmup = warmup;
     res->repeat = repeat;
-    res->effects = effects;
     res->stands = scene_stands(scene);
-    def = pg_scene_world_def(scene, count);
+    /* the joint scenes time awake joints: sleeping is always off in them */
+    if (pg_is_joint_scene(scene)) effects &= ~PG_EFFECT_SLEEPING;
+    res->effects = effects;
+    def = any_world_def(scene, count);
     def.effects = effects;
     if (g_settings.substeps != 0) def.substeps = g_settings.substeps;
     if (g_settings.contact_hertz != 0) def.contact_hertz = g_settings.contact_hertz;
@@ -196,7 +240,7 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
     res->substeps = def.substeps;
     res->contact_hertz = def.contact_hertz;
     res->damping_ratio = def.contact_damping_ratio;
-    size = pg_scene_memory_size(scene, count, &def);
+    size = any_memory_size(scene, count, &def);
     res->memory_bytes = size;
     if (size == 0) {
         const char *why = pg_world_def_problem(&def);
@@ -207,7 +251,8 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
     while (r < repeat) {
         /* untimed until both the runs and the time of the warm-up are done */
         int warming = warm < g_warmup_runs || now_ms() - warm_start < 1000.0 * (double)g_warmup_s;
-        pg_scene sc;
+        built_scene built;
+        pg_world *world;
         pg_result pr;
         pg_world_stats st;
         double t0, t1;
@@ -216,23 +261,24 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
             fprintf(stderr, "pogon-bench: %s %u: out of memory (%zu bytes)\n", scene, count, size);
             return 1;
         }
-        pr = pg_scene_build(scene, count, &def, memory, size, &sc);
+        pr = any_build(scene, count, &def, memory, size, &built);
+        world = any_world(&built);
         if (pr != PG_OK) {
             fprintf(stderr, "pogon-bench: building %s %u failed: %s (%s)\n", scene, count, pg_result_name(pr),
-                    sc.world != NULL ? pg_world_last_error(sc.world) : pg_result_message(pr));
+                    world != NULL ? pg_world_last_error(world) : pg_result_message(pr));
             free(memory);
             return 1;
         }
         for (i = 0; i < warmup; ++i) {
-            pr = pg_world_step(sc.world);
+            pr = pg_world_step(world);
             if (pr != PG_OK) break;
         }
         t0 = now_ms();
-        for (i = 0; pr == PG_OK && i < steps; ++i) pr = pg_world_step(sc.world);
+        for (i = 0; pr == PG_OK && i < steps; ++i) pr = pg_world_step(world);
         t1 = now_ms();
         if (pr != PG_OK) {
             fprintf(stderr, "pogon-bench: %s %u: pg_world_step failed: %s (%s)\n", scene, count, pg_result_name(pr),
-                    pg_world_last_error(sc.world));
+                    pg_world_last_error(world));
             free(memory);
             return 1;
         }
@@ -243,15 +289,19 @@ static int run_bench(const char *scene, uint32_t count, uint32_t steps, uint32_t
         }
         runs[r++] = (t1 - t0) / (double)steps;
         /* every run is bit-identical, so the last one's state is the state */
-        {
-            pg_vec2 p = pg_body_position(sc.world, sc.top);
-            int64_t dx = (int64_t)p.x - sc.top_start.x, dy = (int64_t)p.y - sc.top_start.y;
+        if (built.is_joint) {
+            res->joints = built.joints.joint_count;
+            pg_joint_scene_sanity(scene, count, &built.joints, &res->sanity);
+        } else {
+            const pg_scene *sc = &built.plain;
+            pg_vec2 p = pg_body_position(world, sc->top);
+            int64_t dx = (int64_t)p.x - sc->top_start.x, dy = (int64_t)p.y - sc->top_start.y;
             res->dx = fix_to_double(dx);
             res->dy = fix_to_double(dy);
             res->top_disp = sqrt(res->dx * res->dx + res->dy * res->dy);
-            res->angle_deg = angle_to_degrees(pg_body_angle(sc.world, sc.top));
+            res->angle_deg = angle_to_degrees(pg_body_angle(world, sc->top));
         }
-        st = pg_world_get_stats(sc.world);
+        st = pg_world_get_stats(world);
         res->awake_end = st.awake_body_count;
         res->contacts_end = st.contact_count;
         res->touching_end = st.touching_contact_count;
@@ -287,6 +337,9 @@ static void print_json(const result *r)
     if (r->stands)
         printf("\"top_displacement_m\":%.6f,\"dx_m\":%.6f,\"dy_m\":%.6f,\"angle_deg\":%.4f,\"asleep_step\":%u,", r->top_disp,
                r->dx, r->dy, r->angle_deg, r->asleep_step);
+    if (r->sanity.figure != NULL)
+        printf("\"joints\":%u,\"%s_m\":%.6f,\"worst_gap_m\":%.6f,", r->joints, r->sanity.figure, r->sanity.value_m,
+               r->sanity.worst_gap_m);
     printf("\"awake_bodies\":%u,\"contacts\":%u,\"touching\":%u,\"capacity_misses\":%u,\"speed_clamps\":%u,"
            "\"memory_bytes\":%zu}\n", r->awake_end, r->contacts_end, r->touching_end, r->capacity_misses, r->speed_clamps,
            r->memory_bytes);
@@ -325,6 +378,11 @@ static int mode_scene(const char *scene, const options *o)
     if (run_bench(scene, o->count, o->steps, 0, o->repeat, base_effects(o), &r) != 0) return 1;
     if (o->json) {
         print_json(&r);
+    } else if (r.sanity.figure != NULL) {
+        printf("| scene | count | bodies | joints | steps | ms/step | steps/s | %s m | worst joint gap m |\n", r.sanity.figure);
+        printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+        printf("| %s | %u | %u | %u | %u | %.4f | %.1f | %.5f | %.5f |\n", r.scene, r.count, r.bodies, r.joints, r.steps,
+               r.ms_per_step, r.steps_per_second, r.sanity.value_m, r.sanity.worst_gap_m);
     } else {
         print_table_header();
         print_table_row(&r);
@@ -672,7 +730,8 @@ static void usage(FILE *f)
             "usage: pogon-bench SCENE [--count N] [--steps N] [--repeat R] [--warmup-runs K] [--warmup-seconds S] [--json] [--no-sleep]\n"
             "                         [--substeps N] [--contact-hertz HZ] [--damping-ratio Z]\n"
             "       pogon-bench all | effects [SCENE] | memory | snapshot | compare   [options]\n"
-            "scenes: pyramid (count = rows, default 20), stack (boxes, default 20), rain (circles, default 1000)\n"
+            "scenes: pyramid (count = rows, default 20), stack (boxes, default 20), rain (circles, default 1000),\n"
+            "        joint_grid (columns and rows, default 40), chain (chains of 40 links, default 20)\n"
             "steps default to 600 (pyramid, stack) and 300 (rain); repeat defaults to 3 (median reported)\n");
 }
 
