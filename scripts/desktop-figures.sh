@@ -77,7 +77,7 @@ warm=$("$desktop" --headless --play "$work/ten.pgr" --jump 0 --jump 36000 --jump
   echo "# measured: $stamp"
   echo "# machine: $machine"
   echo "# load: $load"
-  echo "# command: scripts/desktop-figures.sh"
+  echo "# command: scripts/desktop-figures.sh${*:+ $*}"
   printf 'window_pyramid\t%s\n' "$pyramid"
   printf 'window_circles\t%s\n' "$circles"
   printf 'minute_bytes\t%s\n' "$minute_bytes"
