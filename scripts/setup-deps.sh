@@ -28,6 +28,9 @@ PACKAGES=(
   "test|libcmocka-dev|unit-test framework (CMocka 1.1.5) for the tests in tests/"
   "test|clang|the second compiler (clang preset): warnings and gcc-vs-clang determinism"
   "test|doxygen|the API reference (target docs) and docs_api_complete, which fails on an undocumented public item"
+  "test|clang-tidy|static analysis of src/ (scripts/static-analysis.sh, CTest static_clang_tidy in the clang preset)"
+  "test|cppcheck|static analysis of src/ (scripts/static-analysis.sh, CTest static_cppcheck in the clang preset)"
+  "test|llvm|llvm-profdata and llvm-cov: the clang preset's coverage report of src/ (tools/coverage/coverage.py, docs/coverage.md)"
   "test|libclang-rt-dev|clang's runtimes (compiler-rt, libclang-rt-14-dev): libFuzzer and ASan/UBSan for the fuzz targets the clang preset builds (tests/fuzz); clang only recommends it"
   # --- wasm, cross: the determinism_* tests (tests/targets) build the probe for other
   # targets and compare its hashes with the native build's. scripts/test.sh runs them, so

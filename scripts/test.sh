@@ -4,7 +4,8 @@
 # Usage: scripts/test.sh [PRESET...]     (default: release debug-asan clang table8)
 #
 # Installs what is missing (scripts/setup-deps.sh), then for each CMake preset
-# configures, builds and runs ctest (--output-on-failure). A failing preset does not
+# configures, builds and runs ctest (--output-on-failure); after the clang preset's tests
+# it prints the line and branch coverage of src/ (docs/coverage.md). A failing preset does not
 # stop the others; the script exits 1 if any stage of any preset failed. The last line
 # is the total over all presets: "pogon: N passed, N failed" (a preset that fails to
 # configure or build counts as one failure).
@@ -40,8 +41,19 @@ for preset in "${presets[@]}"; do
     summary+=("$preset: build FAILED"); status=1; failed=$(( failed + 1 )); continue
   fi
   stage "$preset: test (ctest --preset $preset)"
+  # A build instrumented for coverage (the clang preset, POGON_COVERAGE) starts from no
+  # profiles, so the report below counts this run's tests only.
+  coverage=0
+  if grep -q '^POGON_COVERAGE:BOOL=ON$' "build/$preset/CMakeCache.txt" 2>/dev/null; then
+    coverage=1
+    rm -rf "build/$preset/coverage"
+  fi
   rc=0
   ctest --preset "$preset" --output-on-failure --parallel "$jobs" 2>&1 | tee "$log" || rc=$?
+  if [ "$coverage" -eq 1 ]; then
+    stage "$preset: coverage of src/ (tools/coverage/coverage.py report build/$preset)"
+    tools/coverage/coverage.py report "build/$preset" || echo "coverage: no report (see above)"
+  fi
   # "100% tests passed, 0 tests failed out of 12"
   line=$(grep -E '^[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1 || true)
   if [ -n "$line" ]; then

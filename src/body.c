@@ -6,6 +6,7 @@
 #include "envelope.h"
 #include "error.h"
 #include "island.h"
+#include "joint_pool.h"
 #include "mass.h"
 #include "reach.h"
 #include "speed_cap.h"
@@ -109,6 +110,7 @@ pg_result pg_body_create(pg_world *world, const pg_body_def *def, pg_body_id *ou
         unsigned char *p = (unsigned char *)&zero;
         size_t k;
         for (k = 0; k < sizeof zero; ++k) p[k] = 0;
+        /* cppcheck-suppress uninitvar ; every byte of zero was set by the loop above */
         *b = zero;
         b->generation = generation == 0 ? 1u : generation;
     }
@@ -129,6 +131,7 @@ pg_result pg_body_create(pg_world *world, const pg_body_def *def, pg_body_id *ou
     b->angular_damping = def->angular_damping;
     b->gravity_scale = def->gravity_scale;
     b->first_shape = PG_NULL_INDEX;
+    b->first_joint = PG_NULL_INDEX;
     b->island = PG_NULL_INDEX;
     b->user_data = def->user_data;
     if (def->type == PG_BODY_DYNAMIC) { /* a dynamic body without shapes weighs 1 kg */
@@ -148,6 +151,7 @@ pg_result pg_body_destroy(pg_world *world, pg_body_id id)
     uint32_t s, next;
     if (world == NULL) return PG_ERR_NULL;
     if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, "pg_body_destroy: body handle is stale or invalid");
+    pg__joints_remove_of_body(world, id.index);
     pg__remove_body_contacts(world, id.index);
     for (s = b->first_shape; s != PG_NULL_INDEX; s = next) {
         next = world->shapes[s].next;
@@ -311,7 +315,9 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
             if (hy > box.hi.y) box.hi.y = hy;
         }
         /* saturating: a body that has flown out of the envelope reaches the edge of the
-         * Q16.16 range, where a plain add would overflow */
+         * Q16.16 range, where a plain add would overflow. Inside the envelope these sums
+         * (and the turn radius's above) never clamp: origin 1000 m + static reach 1000 m
+         * + margin + a sweep of max_linear_speed / step_hz <= 4096 m is below 6100 m */
         box.lo.x = pg__sat64((int64_t)box.lo.x - margin - (b->v.x < 0 ? sweep_x : 0));
         box.lo.y = pg__sat64((int64_t)box.lo.y - margin - (b->v.y < 0 ? sweep_y : 0));
         box.hi.x = pg__sat64((int64_t)box.hi.x + margin + (b->v.x < 0 ? 0 : sweep_x));
@@ -541,8 +547,16 @@ static pg_result dynamic_body(pg_world *world, pg_body_id id, const char *fn, pg
 {
     pg_body *b = pg__body(world, id);
     if (world == NULL) return PG_ERR_NULL;
-    if (b == NULL) return pg__fail(world, PG_ERR_STALE_HANDLE, fn);
-    if (b->type != PG_BODY_DYNAMIC) return pg__fail(world, PG_ERR_BODY_TYPE, "forces and impulses act on dynamic bodies only");
+    /* each failure returns its code here, not pg__fail's: clang's analyzer, which sees
+     * one file, would otherwise take a failure for PG_OK and the callers' b for NULL */
+    if (b == NULL) {
+        (void)pg__fail(world, PG_ERR_STALE_HANDLE, fn);
+        return PG_ERR_STALE_HANDLE;
+    }
+    if (b->type != PG_BODY_DYNAMIC) {
+        (void)pg__fail(world, PG_ERR_BODY_TYPE, "forces and impulses act on dynamic bodies only");
+        return PG_ERR_BODY_TYPE;
+    }
     *out = b;
     return PG_OK;
 }
@@ -634,6 +648,8 @@ pg_result pg_body_apply_linear_impulse(pg_world *world, pg_body_id id, pg_vec2 i
     pg_result r = dynamic_body(world, id, "pg_body_apply_linear_impulse: body handle is stale or invalid", &b);
     if (r != PG_OK) return r;
     if (!in_position_envelope(point)) return pg__fail(world, PG_ERR_ENVELOPE, "point is outside +-1000 m");
+    /* a sum past Q16.16 is past every max_linear_speed too: the cap scales it and counts
+     * it in stats.speed_clamps */
     b->v = pg__clamp_speed(world, pg_v2(pg__sat64(add_to_fix(b->v.x, pg__mul64_shr(impulse.x, b->inv_mass, 38))),
                                         pg__sat64(add_to_fix(b->v.y, pg__mul64_shr(impulse.y, b->inv_mass, 38)))),
                            &b->flags);

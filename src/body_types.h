@@ -43,6 +43,8 @@ typedef struct pg_body {
     uint32_t island;         /* while asleep: the lowest body index of its island */
     uint32_t first_shape;    /* shapes of the body, a list in creation order */
     uint32_t shape_count;
+    uint32_t first_joint;    /* the body's joints, a list through pg_joint next_a / next_b
+                                (derived from the joint pool: rebuilt on a restore) */
     uint64_t user_data;
 } pg_body;
 

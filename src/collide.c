@@ -148,6 +148,12 @@ static int64_t pg__face_off2(const pg_geom *g, int32_t i)
 /* Twice the separation of p from face i (Q46 x 2): 2 p.n - off2, |.| < 2^62. */
 static int64_t pg__sep2(pg_vec2 p, pg_dir n, int64_t off2) { return 2 * pg__vdot46(p, n) - off2; }
 
+/* SATURATION here, in pg__add_half, pg__mid_half and pg__push: never inside the
+ * envelope. Shapes are placed within 1000 m + 1000 m (a static body's reach) of the
+ * origin, so every point and manifold point lies within 2000 m and every separation
+ * within the speculative window (at most 4 x 4096 m/s over one step, contact.c) plus
+ * 4000 m, below 32768 m; only shapes flown out of the envelope (stats.envelope_exits)
+ * reach the edge of Q16.16, where these keep the results defined. */
 /* The Q16.16 value of a "Q46 x 2" quantity. */
 static pg_fix pg__q16_of2(int64_t v2) { return pg__sat64(pg__round_shift64(v2, 31)); }
 

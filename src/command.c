@@ -1,5 +1,7 @@
 /* command.c — the command form of every change made to a world from outside a step,
  * its canonical binary encoding, and a queue for later frames. */
+#include <stddef.h>
+
 #include "pogon/replay.h"
 #include "wide.h"
 #include "text.h"
@@ -9,11 +11,64 @@ static const char *const kind_names[PG_CMD_KIND_COUNT] = {
     "none", "create_body", "destroy_body", "add_shape", "make", "set_transform", "set_linear_velocity",
     "set_angular_velocity", "apply_force", "apply_torque", "apply_linear_impulse", "apply_angular_impulse",
     "set_body_type", "set_awake", "set_gravity", "set_effects", "set_gravity_scale", "set_damping",
-    "set_friction", "set_restitution", "set_density", "set_fixed_rotation", "set_filter", "set_user_data"};
+    "set_friction", "set_restitution", "set_density", "set_fixed_rotation", "set_filter", "set_user_data",
+    "create_distance_joint", "create_revolute_joint", "create_weld_joint", "create_prismatic_joint", "create_mouse_joint",
+    "destroy_joint", "set_joint_motor", "set_joint_limits", "set_mouse_target", "set_mouse_max_force"};
 
 const char *pg_command_kind_name(pg_command_kind kind)
 {
     return (unsigned)kind < PG_CMD_KIND_COUNT ? kind_names[kind] : "unknown";
+}
+
+/* The CREATE_*_JOINT kinds' defaults, copied without the padding bytes a whole-struct
+ * copy may bring (the distance, revolute, weld and prismatic defs have none before
+ * their cookie; the mouse def is copied field by field). */
+#define COPY_TO_COOKIE(dst, src, type) memcpy_bytes((dst), (src), offsetof(type, pg__cookie) + sizeof(uint32_t))
+static void memcpy_bytes(void *dst, const void *src, size_t n)
+{
+    unsigned char *d = (unsigned char *)dst;
+    const unsigned char *p = (const unsigned char *)src;
+    size_t i;
+    for (i = 0; i < n; ++i) d[i] = p[i];
+}
+
+static void init_joint_def(pg_command *c)
+{
+    switch (c->kind) {
+    case PG_CMD_CREATE_DISTANCE_JOINT: {
+        pg_distance_joint_def d = pg_default_distance_joint_def();
+        COPY_TO_COOKIE(&c->joint_def.distance, &d, pg_distance_joint_def);
+        break;
+    }
+    case PG_CMD_CREATE_REVOLUTE_JOINT: {
+        pg_revolute_joint_def d = pg_default_revolute_joint_def();
+        COPY_TO_COOKIE(&c->joint_def.revolute, &d, pg_revolute_joint_def);
+        break;
+    }
+    case PG_CMD_CREATE_WELD_JOINT: {
+        pg_weld_joint_def d = pg_default_weld_joint_def();
+        COPY_TO_COOKIE(&c->joint_def.weld, &d, pg_weld_joint_def);
+        break;
+    }
+    case PG_CMD_CREATE_PRISMATIC_JOINT: {
+        pg_prismatic_joint_def d = pg_default_prismatic_joint_def();
+        COPY_TO_COOKIE(&c->joint_def.prismatic, &d, pg_prismatic_joint_def);
+        break;
+    }
+    case PG_CMD_CREATE_MOUSE_JOINT: {
+        pg_mouse_joint_def d = pg_default_mouse_joint_def();
+        pg_mouse_joint_def *m = &c->joint_def.mouse;
+        m->body = d.body;
+        m->target = d.target;
+        m->hertz = d.hertz;
+        m->damping_ratio = d.damping_ratio;
+        m->max_force = d.max_force;
+        m->user_data = d.user_data;
+        m->pg__cookie = d.pg__cookie;
+        break;
+    }
+    default: break;
+    }
 }
 
 pg_command pg_command_init(pg_command_kind kind)
@@ -26,6 +81,8 @@ pg_command pg_command_init(pg_command_kind kind)
     /* the defs start from their defaults, as every def must (the defs have no padding) */
     c.body_def = pg_default_body_def();
     c.shape_def = pg_default_shape_def();
+    init_joint_def(&c);
+    /* cppcheck-suppress uninitvar ; every byte of c was set by the loop above */
     return c;
 }
 
@@ -33,7 +90,8 @@ pg_command pg_command_init(pg_command_kind kind)
 enum {
     F_BODY = 1u << 0, F_VEC = 1u << 1, F_POINT = 1u << 2, F_SCALAR = 1u << 3, F_SCALAR2 = 1u << 4,
     F_ANGLE = 1u << 5, F_VALUE = 1u << 6, F_VALUE2 = 1u << 7, F_FLAG = 1u << 8, F_USER = 1u << 9,
-    F_MAKE = 1u << 10, F_BODY_DEF = 1u << 11, F_SHAPE_DEF = 1u << 12, F_GEOMETRY = 1u << 13
+    F_MAKE = 1u << 10, F_BODY_DEF = 1u << 11, F_SHAPE_DEF = 1u << 12, F_GEOMETRY = 1u << 13,
+    F_JOINT = 1u << 14, F_JOINT_DEF = 1u << 15
 };
 
 static const uint32_t kind_fields[PG_CMD_KIND_COUNT] = {
@@ -60,7 +118,17 @@ static const uint32_t kind_fields[PG_CMD_KIND_COUNT] = {
     F_BODY | F_SCALAR,                           /* set_density */
     F_BODY | F_VALUE,                            /* set_fixed_rotation */
     F_BODY | F_VALUE | F_VALUE2,                 /* set_filter */
-    F_BODY | F_USER                              /* set_user_data */
+    F_BODY | F_USER,                             /* set_user_data */
+    F_JOINT_DEF,                                 /* create_distance_joint */
+    F_JOINT_DEF,                                 /* create_revolute_joint */
+    F_JOINT_DEF,                                 /* create_weld_joint */
+    F_JOINT_DEF,                                 /* create_prismatic_joint */
+    F_JOINT_DEF,                                 /* create_mouse_joint */
+    F_JOINT,                                     /* destroy_joint */
+    F_JOINT | F_FLAG | F_SCALAR | F_SCALAR2,     /* set_joint_motor */
+    F_JOINT | F_FLAG | F_SCALAR | F_SCALAR2,     /* set_joint_limits */
+    F_JOINT | F_VEC,                             /* set_mouse_target */
+    F_JOINT | F_SCALAR                           /* set_mouse_max_force */
 };
 
 /* ---- messages (text.h) ----------------------------------------------------------------- */
@@ -136,17 +204,51 @@ static int command_problem(const pg_command *c, text *t)
     return 0;
 }
 
+/* The joint commands of pg_command_apply_made. */
+static pg_result apply_joint(pg_world *w, const pg_command *c, pg_joint_id *created)
+{
+    pg_joint_id id = {0, 0};
+    pg_result r;
+    const pg_command_joint_def *d = &c->joint_def;
+    switch (c->kind) {
+    case PG_CMD_CREATE_DISTANCE_JOINT: r = pg_distance_joint_create(w, &d->distance, &id); break;
+    case PG_CMD_CREATE_REVOLUTE_JOINT: r = pg_revolute_joint_create(w, &d->revolute, &id); break;
+    case PG_CMD_CREATE_WELD_JOINT: r = pg_weld_joint_create(w, &d->weld, &id); break;
+    case PG_CMD_CREATE_PRISMATIC_JOINT: r = pg_prismatic_joint_create(w, &d->prismatic, &id); break;
+    case PG_CMD_CREATE_MOUSE_JOINT: r = pg_mouse_joint_create(w, &d->mouse, &id); break;
+    case PG_CMD_DESTROY_JOINT: return pg_joint_destroy(w, c->joint);
+    case PG_CMD_SET_JOINT_MOTOR:
+        if (pg_joint_type_of(w, c->joint) == PG_JOINT_PRISMATIC) return pg_prismatic_joint_set_motor(w, c->joint, c->flag != 0, c->scalar, c->scalar2);
+        return pg_revolute_joint_set_motor(w, c->joint, c->flag != 0, c->scalar, c->scalar2); /* names any other kind in its error */
+    case PG_CMD_SET_JOINT_LIMITS:
+        if (pg_joint_type_of(w, c->joint) == PG_JOINT_DISTANCE) return pg_distance_joint_set_limits(w, c->joint, c->flag != 0, c->scalar, c->scalar2);
+        if (pg_joint_type_of(w, c->joint) == PG_JOINT_PRISMATIC) return pg_prismatic_joint_set_limits(w, c->joint, c->flag != 0, c->scalar, c->scalar2);
+        return pg_revolute_joint_set_limits(w, c->joint, c->flag != 0, c->scalar, c->scalar2);
+    case PG_CMD_SET_MOUSE_TARGET: return pg_mouse_joint_set_target(w, c->joint, c->vec);
+    default: return pg_mouse_joint_set_max_force(w, c->joint, c->scalar); /* PG_CMD_SET_MOUSE_MAX_FORCE */
+    }
+    if (r == PG_OK && created != NULL) *created = id;
+    return r;
+}
+
 pg_result pg_command_apply(pg_world *w, const pg_command *c, pg_body_id *created)
+{
+    return pg_command_apply_made(w, c, created, NULL);
+}
+
+pg_result pg_command_apply_made(pg_world *w, const pg_command *c, pg_body_id *created, pg_joint_id *created_joint)
 {
     pg_body_id id = {0, 0};
     pg_shape_id sid;
     pg_result r;
     text t;
     if (created != NULL) *created = id;
+    if (created_joint != NULL) created_joint->index = created_joint->generation = 0;
     if (w == NULL) return PG_ERR_NULL;
     if (c == NULL) return pg__fail(w, PG_ERR_NULL, "pg_command_apply: command is NULL");
     start(&t, "pg_command_apply");
     if (kind_problem(c, &t)) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, t.buf);
+    if (c->kind >= PG_CMD_CREATE_DISTANCE_JOINT) return apply_joint(w, c, created_joint);
     switch (c->kind) {
     case PG_CMD_CREATE_BODY: r = pg_body_create(w, &c->body_def, &id); break;
     case PG_CMD_DESTROY_BODY: return pg_body_destroy(w, c->body);
@@ -201,6 +303,57 @@ static void put_i32(writer *w, int32_t v) { put_u32(w, (uint32_t)v); }
 static void put_u64(writer *w, uint64_t v) { put_u32(w, (uint32_t)(v & 0xFFFFFFFFu)); put_u32(w, (uint32_t)(v >> 32)); }
 static void put_vec(writer *w, pg_vec2 v) { put_i32(w, v.x); put_i32(w, v.y); }
 
+static void put_id(writer *w, uint32_t index, uint32_t generation) { put_u32(w, index); put_u32(w, generation); }
+
+/* A joint def: its fields in the order of the def (docs/formats.md), flags as one byte. */
+static void put_joint_def(writer *w, const pg_command *c)
+{
+    const pg_command_joint_def *j = &c->joint_def;
+    switch (c->kind) {
+    case PG_CMD_CREATE_DISTANCE_JOINT: {
+        const pg_distance_joint_def *d = &j->distance;
+        put_id(w, d->body_a.index, d->body_a.generation), put_id(w, d->body_b.index, d->body_b.generation);
+        put_vec(w, d->local_anchor_a), put_vec(w, d->local_anchor_b), put_i32(w, d->length);
+        put_u8(w, d->enable_spring != 0), put_i32(w, d->hertz), put_i32(w, d->damping_ratio);
+        put_u8(w, d->enable_limit != 0), put_i32(w, d->min_length), put_i32(w, d->max_length);
+        put_u8(w, d->collide_connected != 0), put_u64(w, d->user_data);
+        break;
+    }
+    case PG_CMD_CREATE_REVOLUTE_JOINT: {
+        const pg_revolute_joint_def *d = &j->revolute;
+        put_id(w, d->body_a.index, d->body_a.generation), put_id(w, d->body_b.index, d->body_b.generation);
+        put_vec(w, d->local_anchor_a), put_vec(w, d->local_anchor_b), put_u32(w, d->reference_angle);
+        put_u8(w, d->enable_limit != 0), put_i32(w, d->lower_angle), put_i32(w, d->upper_angle);
+        put_u8(w, d->enable_motor != 0), put_i32(w, d->motor_speed), put_i32(w, d->max_motor_torque);
+        put_u8(w, d->collide_connected != 0), put_u64(w, d->user_data);
+        break;
+    }
+    case PG_CMD_CREATE_WELD_JOINT: {
+        const pg_weld_joint_def *d = &j->weld;
+        put_id(w, d->body_a.index, d->body_a.generation), put_id(w, d->body_b.index, d->body_b.generation);
+        put_vec(w, d->local_anchor_a), put_vec(w, d->local_anchor_b), put_u32(w, d->reference_angle);
+        put_i32(w, d->linear_hertz), put_i32(w, d->linear_damping_ratio), put_i32(w, d->angular_hertz), put_i32(w, d->angular_damping_ratio);
+        put_u8(w, d->collide_connected != 0), put_u64(w, d->user_data);
+        break;
+    }
+    case PG_CMD_CREATE_PRISMATIC_JOINT: {
+        const pg_prismatic_joint_def *d = &j->prismatic;
+        put_id(w, d->body_a.index, d->body_a.generation), put_id(w, d->body_b.index, d->body_b.generation);
+        put_vec(w, d->local_anchor_a), put_vec(w, d->local_anchor_b), put_vec(w, d->local_axis_a), put_u32(w, d->reference_angle);
+        put_u8(w, d->enable_limit != 0), put_i32(w, d->lower_translation), put_i32(w, d->upper_translation);
+        put_u8(w, d->enable_motor != 0), put_i32(w, d->motor_speed), put_i32(w, d->max_motor_force);
+        put_u8(w, d->collide_connected != 0), put_u64(w, d->user_data);
+        break;
+    }
+    default: {
+        const pg_mouse_joint_def *d = &j->mouse;
+        put_id(w, d->body.index, d->body.generation), put_vec(w, d->target);
+        put_i32(w, d->hertz), put_i32(w, d->damping_ratio), put_i32(w, d->max_force), put_u64(w, d->user_data);
+        break;
+    }
+    }
+}
+
 size_t pg_command_encode(const pg_command *c, uint8_t *buffer, size_t capacity)
 {
     writer w;
@@ -219,6 +372,7 @@ size_t pg_command_encode(const pg_command *c, uint8_t *buffer, size_t capacity)
     w.ok = 1;
     f = kind_fields[c->kind];
     put_u8(&w, (uint32_t)c->kind);
+    if (f & F_JOINT) { put_u32(&w, c->joint.index); put_u32(&w, c->joint.generation); }
     if (f & F_BODY) { put_u32(&w, c->body.index); put_u32(&w, c->body.generation); }
     if (f & F_VEC) put_vec(&w, c->vec);
     if (f & F_FLAG) put_u8(&w, c->flag != 0);
@@ -259,6 +413,7 @@ size_t pg_command_encode(const pg_command *c, uint8_t *buffer, size_t capacity)
         for (i = 0; i < c->geometry.count; ++i) put_vec(&w, c->geometry.vertices[i]);
         put_i32(&w, c->geometry.radius);
     }
+    if (f & F_JOINT_DEF) put_joint_def(&w, c);
     return w.ok ? w.len : 0;
 }
 
@@ -317,6 +472,82 @@ static uint32_t get_bool(reader *r, const char *field)
     return v;
 }
 
+static pg_body_id get_id(reader *r, const char *field)
+{
+    pg_body_id id;
+    id.index = get_u32(r, field);
+    id.generation = get_u32(r, field);
+    return id;
+}
+
+/* The fields put_joint_def writes, into the def pg_command_init left with its defaults. */
+static void get_joint_def(reader *r, pg_command *c)
+{
+    pg_command_joint_def *j = &c->joint_def;
+    switch (c->kind) {
+    case PG_CMD_CREATE_DISTANCE_JOINT: {
+        pg_distance_joint_def *d = &j->distance;
+        d->body_a = get_id(r, "command.joint_def.body_a"), d->body_b = get_id(r, "command.joint_def.body_b");
+        d->local_anchor_a = get_vec(r, "command.joint_def.local_anchor_a"), d->local_anchor_b = get_vec(r, "command.joint_def.local_anchor_b");
+        d->length = get_i32(r, "command.joint_def.length");
+        d->enable_spring = (int)get_bool(r, "command.joint_def.enable_spring");
+        d->hertz = get_i32(r, "command.joint_def.hertz"), d->damping_ratio = get_i32(r, "command.joint_def.damping_ratio");
+        d->enable_limit = (int)get_bool(r, "command.joint_def.enable_limit");
+        d->min_length = get_i32(r, "command.joint_def.min_length"), d->max_length = get_i32(r, "command.joint_def.max_length");
+        d->collide_connected = (int)get_bool(r, "command.joint_def.collide_connected");
+        d->user_data = get_u64(r, "command.joint_def.user_data");
+        break;
+    }
+    case PG_CMD_CREATE_REVOLUTE_JOINT: {
+        pg_revolute_joint_def *d = &j->revolute;
+        d->body_a = get_id(r, "command.joint_def.body_a"), d->body_b = get_id(r, "command.joint_def.body_b");
+        d->local_anchor_a = get_vec(r, "command.joint_def.local_anchor_a"), d->local_anchor_b = get_vec(r, "command.joint_def.local_anchor_b");
+        d->reference_angle = get_u32(r, "command.joint_def.reference_angle");
+        d->enable_limit = (int)get_bool(r, "command.joint_def.enable_limit");
+        d->lower_angle = get_i32(r, "command.joint_def.lower_angle"), d->upper_angle = get_i32(r, "command.joint_def.upper_angle");
+        d->enable_motor = (int)get_bool(r, "command.joint_def.enable_motor");
+        d->motor_speed = get_i32(r, "command.joint_def.motor_speed"), d->max_motor_torque = get_i32(r, "command.joint_def.max_motor_torque");
+        d->collide_connected = (int)get_bool(r, "command.joint_def.collide_connected");
+        d->user_data = get_u64(r, "command.joint_def.user_data");
+        break;
+    }
+    case PG_CMD_CREATE_WELD_JOINT: {
+        pg_weld_joint_def *d = &j->weld;
+        d->body_a = get_id(r, "command.joint_def.body_a"), d->body_b = get_id(r, "command.joint_def.body_b");
+        d->local_anchor_a = get_vec(r, "command.joint_def.local_anchor_a"), d->local_anchor_b = get_vec(r, "command.joint_def.local_anchor_b");
+        d->reference_angle = get_u32(r, "command.joint_def.reference_angle");
+        d->linear_hertz = get_i32(r, "command.joint_def.linear_hertz"), d->linear_damping_ratio = get_i32(r, "command.joint_def.linear_damping_ratio");
+        d->angular_hertz = get_i32(r, "command.joint_def.angular_hertz"), d->angular_damping_ratio = get_i32(r, "command.joint_def.angular_damping_ratio");
+        d->collide_connected = (int)get_bool(r, "command.joint_def.collide_connected");
+        d->user_data = get_u64(r, "command.joint_def.user_data");
+        break;
+    }
+    case PG_CMD_CREATE_PRISMATIC_JOINT: {
+        pg_prismatic_joint_def *d = &j->prismatic;
+        d->body_a = get_id(r, "command.joint_def.body_a"), d->body_b = get_id(r, "command.joint_def.body_b");
+        d->local_anchor_a = get_vec(r, "command.joint_def.local_anchor_a"), d->local_anchor_b = get_vec(r, "command.joint_def.local_anchor_b");
+        d->local_axis_a = get_vec(r, "command.joint_def.local_axis_a");
+        d->reference_angle = get_u32(r, "command.joint_def.reference_angle");
+        d->enable_limit = (int)get_bool(r, "command.joint_def.enable_limit");
+        d->lower_translation = get_i32(r, "command.joint_def.lower_translation"), d->upper_translation = get_i32(r, "command.joint_def.upper_translation");
+        d->enable_motor = (int)get_bool(r, "command.joint_def.enable_motor");
+        d->motor_speed = get_i32(r, "command.joint_def.motor_speed"), d->max_motor_force = get_i32(r, "command.joint_def.max_motor_force");
+        d->collide_connected = (int)get_bool(r, "command.joint_def.collide_connected");
+        d->user_data = get_u64(r, "command.joint_def.user_data");
+        break;
+    }
+    default: {
+        pg_mouse_joint_def *d = &j->mouse;
+        d->body = get_id(r, "command.joint_def.body");
+        d->target = get_vec(r, "command.joint_def.target");
+        d->hertz = get_i32(r, "command.joint_def.hertz"), d->damping_ratio = get_i32(r, "command.joint_def.damping_ratio");
+        d->max_force = get_i32(r, "command.joint_def.max_force");
+        d->user_data = get_u64(r, "command.joint_def.user_data");
+        break;
+    }
+    }
+}
+
 pg_result pg_command_decode(const uint8_t *buffer, size_t size, pg_command *c, size_t *consumed, size_t *error_offset,
                             const char **error_field)
 {
@@ -335,6 +566,7 @@ pg_result pg_command_decode(const uint8_t *buffer, size_t size, pg_command *c, s
     if (r.error_field == NULL && (kind == 0 || kind >= PG_CMD_KIND_COUNT)) bad(&r, 0, "command.kind");
     *c = pg_command_init(r.error_field == NULL ? (pg_command_kind)kind : PG_CMD_NONE);
     f = r.error_field == NULL ? kind_fields[kind] : 0u;
+    if (f & F_JOINT) { c->joint.index = get_u32(&r, "command.joint.index"); c->joint.generation = get_u32(&r, "command.joint.generation"); }
     if (f & F_BODY) { c->body.index = get_u32(&r, "command.body.index"); c->body.generation = get_u32(&r, "command.body.generation"); }
     if (f & F_VEC) c->vec = get_vec(&r, "command.vec");
     if (f & F_FLAG) c->flag = get_bool(&r, "command.flag");
@@ -387,6 +619,7 @@ pg_result pg_command_decode(const uint8_t *buffer, size_t size, pg_command *c, s
         for (i = 0; r.error_field == NULL && i < c->geometry.count; ++i) c->geometry.vertices[i] = get_vec(&r, "command.geometry.vertex");
         c->geometry.radius = get_i32(&r, "command.geometry.radius");
     }
+    if (f & F_JOINT_DEF) get_joint_def(&r, c);
     if (r.error_field != NULL) {
         if (error_offset != NULL) *error_offset = r.error_offset;
         if (error_field != NULL) *error_field = r.error_field;

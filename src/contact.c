@@ -11,6 +11,7 @@
 #include "envelope.h"
 #include "events.h"
 #include "island.h"
+#include "joint_pool.h"
 #include "world_types.h"
 
 
@@ -23,8 +24,16 @@ static int shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb)
     return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
 }
 
+/* Joined bodies collide only when a joint says so (collide_connected). Apart from
+ * shapes_should_collide so that stays small enough to inline in the merge. */
+static int joined_apart(const pg_world *w, uint32_t sa, uint32_t sb)
+{
+    uint32_t a = w->shapes[sa].body, b = w->shapes[sb].body;
+    return w->bodies[a].first_joint != PG_NULL_INDEX && w->bodies[b].first_joint != PG_NULL_INDEX && pg__joint_blocks_collision(w, a, b);
+}
+
 /* The same for continuous.c; the merge below keeps its inlined copy. */
-int pg__shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb) { return shapes_should_collide(w, sa, sb); }
+int pg__shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb) { return shapes_should_collide(w, sa, sb) && !joined_apart(w, sa, sb); }
 
 /* Geometric mean, the usual rule: one slippery surface makes the pair slippery. */
 static pg_fix mix_friction(pg_fix a, pg_fix b) { return pg_fix_sqrt(pg_fix_mul(a, b)); }
@@ -88,6 +97,7 @@ static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact
         int64_t hz = (int64_t)w->def.step_hz;
         /* reach = sum / hz (sum >= 0: the quotient is its floor) exceeds the distance
          * exactly when sum >= (distance + 1) hz; a resting pair skips the division */
+        /* never clamps: four speeds within max_linear_speed (<= 4096 m/s) and hz >= 1 */
         if (sum >= ((int64_t)PG_SPECULATIVE_DISTANCE + 1) * hz) speculative = pg__sat64(sum / hz);
     }
     collide_shapes(w, sa, sb, speculative, &m);
@@ -172,7 +182,7 @@ pg_result pg__update_contacts(pg_world *w)
         if (j < n_pairs) {
             pa = w->proxy_shape[w->pairs[j].a];
             pb = w->proxy_shape[w->pairs[j].b];
-            if (!shapes_should_collide(w, pa, pb)) continue;
+            if (!shapes_should_collide(w, pa, pb) || joined_apart(w, pa, pb)) continue;
             pkey = pair_key(pa, pb);
         }
         while (okey < pkey) {
@@ -180,7 +190,7 @@ pg_result pg__update_contacts(pg_world *w)
             const pg_contact *o = &old[i];
             int kept = 0;
             if (w->shapes[o->shape_a].used && w->shapes[o->shape_b].used && !body_was_active(w, o->shape_a) &&
-                !body_was_active(w, o->shape_b) && shapes_should_collide(w, o->shape_a, o->shape_b)) {
+                !body_was_active(w, o->shape_b) && shapes_should_collide(w, o->shape_a, o->shape_b) && !joined_apart(w, o->shape_a, o->shape_b)) {
                 if (out < w->def.max_contacts) {
                     next[out++] = *o;
                     kept = 1;

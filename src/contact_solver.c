@@ -11,6 +11,7 @@
  */
 #include "contact_solver.h"
 #include "intmath.h"
+#include "speed_cap.h"
 #include "wide.h"
 
 /* One row's coefficients: the linear ones kA d, kB d (Q2.30) and the angular ones gA, gB
@@ -66,29 +67,6 @@ typedef struct contact_constraint {
                                 (LAZY ROWS, in prepare_constraints) */
     constraint_point p[2];
 } constraint;
-
-/* Box2D v3's b2MakeSoft in fixed point: omega = 2 pi hz, a1 = 2 zeta + h omega,
- * a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3,
- * impulse scale a3. h = 1 / n_per_second. */
-static softness make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
-{
-    softness s;
-    int64_t omega = row_round((int64_t)hertz * PG_FIX_TWO_PI, 16); /* Q16 */
-    int64_t h_omega = (omega * 2 + (int64_t)n_per_second) / (2 * (int64_t)n_per_second);
-    int64_t a1 = 2 * (int64_t)zeta + h_omega;
-    int64_t a2 = row_round(h_omega * a1, 16);
-    s.bias_rate = a1 > 0 ? (pg_fix)((omega * 65536 + a1 / 2) / a1) : 0;
-    s.mass_scale = (int32_t)((a2 * (INT64_C(1) << 30) + (65536 + a2) / 2) / (65536 + a2));
-    s.impulse_scale = (int32_t)(((INT64_C(1) << 46) + (65536 + a2) / 2) / (65536 + a2));
-    {
-        /* a soft row at rest (rel = 0) keeps its lambda when mass_scale bias = -impulse_scale
-         * lambda; impulse_scale < 2^30, so the product fits */
-        int64_t hold = s.mass_scale > 0 ? ((int64_t)s.impulse_scale * (1 << 16) + s.mass_scale / 2) / s.mass_scale : INT32_MAX;
-        s.hold_rate = (int32_t)(hold > INT32_MAX ? INT32_MAX : hold);
-    }
-    return s;
-}
-
 
 /* The separation from which up |round(bias_rate s / 2^16)| <= floor (DEEP PUSH): there
  * |bias_rate s| <= floor 2^16, so the rounded bias is within the floor too. */
@@ -609,6 +587,8 @@ PG__NOINLINE void record_approach(const step_context *ctx, constraint_point *p, 
         tau = s >= (INT64_C(1) << 38) ? h : (s << 24) / -u;
         tau = tau >= (h >> 8) + 1 ? h : tau << 8;
     }
+    /* reachable inside the envelope (a 50 m body's rim at 1000 rad/s moves 50000 m/s):
+     * a clamped value is counted by pg__contacts_store */
     p->relative_velocity = pg__sat64(u + pg__mul64_shr(a, tau - h / 2, 32));
 }
 
@@ -766,7 +746,11 @@ static inline velocity load_pseudo(const solver_body *b)
     return v;
 }
 
-static inline void store_pseudo(solver_body *b, const velocity *v) { b->pv = pg_v2(clamp_velocity(v->x), clamp_velocity(v->y)); }
+static inline void store_pseudo(solver_body *b, const velocity *v)
+{
+    b->pv = pg_v2(clamp_velocity(v->x), clamp_velocity(v->y));
+    b->saturated |= (uint32_t)(b->pv.x != v->x || b->pv.y != v->y);
+}
 
 /* One pseudo row (DEEP PUSH): the accumulated pseudo lambda becomes acc, clamped to
  * [0, LAMBDA_MAX], and the change moves the pseudo velocities along the normal only. */
@@ -794,7 +778,10 @@ PG__NOINLINE void solve_deep_push(const step_context *ctx, constraint *cons, con
         for (j = 0; j < c->count; ++j) {
             constraint_point *p = &c->p[(c->count == 2 && order) ? 1 - j : j];
             /* a gap (the separation this substep's soft pass used): pseudo motion may
-             * close it in the substep, as v may; touching: the excess push-out or 0 */
+             * close it in the substep, as v may; touching: the excess push-out or 0.
+             * The clamp changes nothing: an offset of 32768 m/s or more outweighs any
+             * linear_speed (|.| <= 2^30.5, 23170 m/s), so b > 0 with or without it, and
+             * deep_row's acc, deep_impulse - b < 8192 - 9598, clamps to 0 either way. */
             int64_t offset = p->separation > 0 ? pg__sat64(p->separation * ctx->n) : p->deep_push;
             int64_t b = linear_speed(&pa, &pb, c->n) + offset;
             if (b >= 0 && p->deep_impulse == 0) continue; /* wants nothing, holds nothing */
@@ -990,6 +977,8 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
              * there would swing with the body's rotation and fake the gap. */
             int64_t hx = row_round((int64_t)c->n.x * cp->separation, 31);
             int64_t hy = row_round((int64_t)c->n.y * cp->separation, 31);
+            /* rA, rB never clamp inside the envelope: an anchor lies on its body's
+             * surface, within its reach (50 m, a static body's 1000 m) of the centre */
             pg_vec2 rA = pg_v2(pg__sat64((int64_t)cp->point.x - hx - A_center.x), pg__sat64((int64_t)cp->point.y - hy - A_center.y));
             pg_vec2 rB = pg_v2(pg__sat64((int64_t)cp->point.x + hx - B_center.x), pg__sat64((int64_t)cp->point.y + hy - B_center.y));
             /* in int64: a restored snapshot may hold any contact point, and anchors
@@ -1007,11 +996,16 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
             /* what normal_separation finds before anything moves (dp = 0, dq = 1: each
              * anchor_along is nr 2^30), for the first substep's soft pass */
             along = p->nrB - p->nrA;
+            /* never clamps inside the envelope: the separation is within the speculative
+             * window (16384 m, contact.c) and |along| within two reaches (2000 m) */
             p->adjusted_separation = pg__sat64((int64_t)cp->separation - along);
             p->separation = along + p->adjusted_separation;
             p->ctA = (pg_fix)row_round(-nrA, 30); /* rA x t */
             p->ctB = (pg_fix)row_round(-nrB, 30);
         }
+        /* a turning body is dynamic or kinematic: |r| <= 50 m, no clamp. The cached
+         * impulses below are what pg__contacts_store wrote (within [0, L] and [-L, L]) or
+         * what a restore accepted (state.c refuses beyond L): those clamps never bite. */
         p->cnA = turnA ? pg__sat64(p->xrA) : 0;
         p->cnB = turnB ? pg__sat64(p->xrB) : 0;
         if (p->cnA != 0 || p->cnB != 0) c->normal_linear = 0;
@@ -1029,6 +1023,7 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
         ab.x = bodies[c->b].accel.x; ab.y = bodies[c->b].accel.y; ab.w = bodies[c->b].alpha;
         for (k = 0; k < c->count; ++k) {
             constraint_point *p = &c->p[k];
+            /* reachable (rim speeds, as relative_velocity): counted by pg__contacts_store */
             p->approach_start = pg__sat64(relative_speed(&va, &vb, c->n, p->cnA, p->cnB));
             p->approach_accel = pg__sat64(relative_speed(&aa, &ab, c->n, p->cnA, p->cnB));
         }
@@ -1102,12 +1097,13 @@ void pg__contacts_set_softness(step_context *ctx, const pg_world_def *def)
      * cap, but at 2 substeps (60 Hz at 120 a second, omega h = pi), at 1, or at 60 Hz it
      * was past it, where the soft step is not stable: a heavy box on a light one shook at
      * 0.5-4 m/s or fell through it (test_mass_ratio_within_the_softness_cap). */
+    /* cppcheck-suppress ctuuninitvar ; pg__solve sets ctx->n before this call, which fills in the rest */
     hertz_cap = (pg_fix)((int64_t)ctx->n * 16384); /* n / 4 in Q16.16, exact; n <= 16000 */
     hertz = def->contact_hertz < hertz_cap ? def->contact_hertz : hertz_cap;
     hertz_static = pg_fix_add(hertz, hertz);
     if (hertz_static > hertz_cap) hertz_static = hertz_cap;
-    ctx->soft = make_soft(hertz, def->contact_damping_ratio, ctx->n);
-    ctx->soft_static = make_soft(hertz_static, def->contact_damping_ratio, ctx->n);
+    ctx->soft = pg__make_soft(hertz, def->contact_damping_ratio, ctx->n);
+    ctx->soft_static = pg__make_soft(hertz_static, def->contact_damping_ratio, ctx->n);
     ctx->push_max = def->contact_push_max;
     ctx->push_floor = ctx->push_max / 32;
     ctx->soft.floor_depth = floor_depth(&ctx->soft, ctx->push_floor);
@@ -1146,9 +1142,11 @@ void pg__contacts_warm_start(const pg_contact_stage *s, const step_context *ctx,
         solver_body *sb = &bodies[active[i]];
         /* v within the kernel's bounds and |dv| < 2^32: the sums are clamped like a store */
         if ((sb->dv_x | sb->dv_y | sb->dw) != 0) {
-            sb->v.x = clamp_velocity((int64_t)sb->v.x + sb->dv_x);
-            sb->v.y = clamp_velocity((int64_t)sb->v.y + sb->dv_y);
-            sb->w = clamp_velocity(sb->w + sb->dw);
+            int64_t vx = (int64_t)sb->v.x + sb->dv_x, vy = (int64_t)sb->v.y + sb->dv_y, w = sb->w + sb->dw;
+            sb->v.x = clamp_velocity(vx);
+            sb->v.y = clamp_velocity(vy);
+            sb->w = clamp_velocity(w);
+            sb->saturated |= (uint32_t)(sb->v.x != vx || sb->v.y != vy || sb->w != w);
         }
     }
 }
@@ -1194,9 +1192,11 @@ void pg__contacts_restitution(const pg_contact_stage *s, const step_context *ctx
     for (i = 0; i < s->count; ++i) restitution(&s->cons[i], bodies, ctx->world->def.restitution_threshold, ctx->h_q32 / 2);
 }
 
+static inline int at_edge(pg_fix v) { return v == PG_FIX_MAX || v == PG_FIX_MIN; }
+
 void pg__contacts_store(const pg_contact_stage *s, pg_world *w)
 {
-    uint32_t i;
+    uint32_t i, held_at_bound = 0;
     for (i = 0; i < s->count; ++i) {
         const constraint *c = &s->cons[i];
         pg_contact *ct = &w->contacts[c->contact];
@@ -1209,6 +1209,15 @@ void pg__contacts_store(const pg_contact_stage *s, pg_world *w)
             /* only a point still deep keeps its pseudo impulse: the pseudo pass ends with
              * the overlap that called for it (DEEP PUSH) */
             ct->points[k].push_impulse = c->p[k].deep_push < 0 ? c->p[k].deep_impulse : 0;
+            /* stats.saturations: an impulse the rows clamped to LAMBDA_MAX (normal_apply,
+             * rebound_apply, deep_row, the friction bound and the central row's sum;
+             * max_normal_impulse is the largest normal one of the step), or a speed of the
+             * approach left at the edge of Q16.16 */
+            held_at_bound += (uint32_t)(c->p[k].max_normal_impulse == LAMBDA_MAX || c->p[k].normal_impulse == LAMBDA_MAX ||
+                                        c->p[k].deep_impulse == LAMBDA_MAX || c->p[k].tangent_impulse == LAMBDA_MAX ||
+                                        c->p[k].tangent_impulse == -LAMBDA_MAX || at_edge(c->p[k].relative_velocity) ||
+                                        at_edge(c->p[k].approach_start) || at_edge(c->p[k].approach_accel));
         }
     }
+    if (held_at_bound != 0) pg__count_saturations(w, held_at_bound);
 }

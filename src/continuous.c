@@ -177,6 +177,7 @@ static void place_at(const pg_sweep *s, const pg_body *b, const pg_geom *local, 
     pg_vec2 c;
     pg_rot q;
     pg_angle a = s->a0 + (pg_angle)(uint64_t)pg__round_shift64(s->turn * t, 16);
+    /* never clamps: t in [0, 1], the point lies between c0 and c1 (both Q16.16) */
     c.x = pg__sat64((int64_t)s->c0.x + pg__round_shift64(((int64_t)s->c1.x - s->c0.x) * t, 16));
     c.y = pg__sat64((int64_t)s->c0.y + pg__round_shift64(((int64_t)s->c1.y - s->c0.y) * t, 16));
     q = pg_rot_from_angle(a);
@@ -188,6 +189,8 @@ static void place_at(const pg_sweep *s, const pg_body *b, const pg_geom *local, 
 static int64_t distance(const pg_geom *g, const pg_geom *target, int64_t window, pg_dir *n)
 {
     pg_manifold m;
+    /* window: the reach of a step (a bound of at most 2 x 16384 m plus the target), below
+     * 2^31 inside the envelope; beyond, a clamped window only finds fewer contacts */
     pg_collide(g, target, pg__sat64(window), &m);
     if (m.count == 0) return INT64_MAX;
     *n = m.normal;
@@ -285,6 +288,8 @@ static pg_vec2 without_approach(pg_vec2 v, pg_dir n)
 {
     int64_t vn = approach(v.x, v.y, n);
     if (vn <= 0) return v;
+    /* v less a part of itself along n: no longer than v, so within Q16.16 but for a v
+     * near the corner of the range (|v| > 32768), far outside the envelope */
     return pg_v2(pg__sat64((int64_t)v.x - pg__round_shift64(vn * n.x, 30)), pg__sat64((int64_t)v.y - pg__round_shift64(vn * n.y, 30)));
 }
 
@@ -335,6 +340,7 @@ void pg__sweep_fast_turns(pg_world *w, pg_sweep *sweeps, uint32_t n, uint32_t *s
             pg_body *b = &w->bodies[sw->body];
             pg_vec2 dc = pg_v2((pg_fix)((int64_t)sw->c1.x - sw->c0.x), (pg_fix)((int64_t)sw->c1.y - sw->c0.y));
             dc = without_approach(dc, hold);
+            /* never clamps inside the envelope: |c0| <= 1000 m, |dc| <= one step's path */
             sw->c1 = pg_v2(pg__sat64((int64_t)sw->c0.x + dc.x), pg__sat64((int64_t)sw->c0.y + dc.y));
             sw->moved = 1;
             /* a projection cannot lengthen v, but its rounding might by a step: keep the cap */
@@ -348,6 +354,7 @@ void pg__sweep_fast_turns(pg_world *w, pg_sweep *sweeps, uint32_t n, uint32_t *s
         pg_body *b = &w->bodies[s->body];
         int64_t t = s->fraction;
         if (t >= PG_FIX_ONE && !s->moved) continue;
+        /* between c0 and c1, as in the sweep's placement: never clamps */
         b->center.x = pg__sat64((int64_t)s->c0.x + pg__round_shift64(((int64_t)s->c1.x - s->c0.x) * t, 16));
         b->center.y = pg__sat64((int64_t)s->c0.y + pg__round_shift64(((int64_t)s->c1.y - s->c0.y) * t, 16));
         b->angle = s->a0 + (pg_angle)(uint64_t)pg__round_shift64(s->turn * t, 16);

@@ -312,7 +312,7 @@ size_t pg_fix_format(pg_fix a, char *buf, size_t size)
      * always suffice: 10^-5 / 2 < 2^-16 / 2. */
     for (places = 0; places <= 5; ++places, pow10 *= 10u) {
         uint64_t back;
-        digits = (fr * pow10 * 2u + 65536u) / (2u * 65536u);              /* round(fr * 10^p / 2^16) */
+        digits = (fr * pow10 * 2u + 65536u) / (UINT64_C(2) * 65536u);              /* round(fr * 10^p / 2^16) */
         back = (2u * digits * 65536u + pow10) / (2u * pow10);             /* round(digits * 2^16 / 10^p) */
         if (back == fr) break;
     }

@@ -83,6 +83,9 @@ static int pg__centrally_symmetric(const pg_geom *g, int32_t half)
  *     rotates only its first half and negates the unsaturated value for the second;
  *   - R 0 is 0, so a vertex or centroid at the body's point lands on `position`
  *     saturated (to PG_FIX_MIN when it is INT32_MIN), and a zero normal stays zero. */
+/* The saturating adds here never clamp inside the envelope: |position| <= 1000 m plus
+ * a reach of at most 1000 m (a static body's) is far below 32768 m; a shape that flew
+ * out of the envelope (stats.envelope_exits) stops at the edge of the range. */
 static void place(const pg_geom *local, pg_vec2 position, pg_rot rotation, pg_geom *world)
 {
     int32_t i, count = local->count, half = count / 2;

@@ -1,5 +1,5 @@
 /* island.c — sleeping. Bodies at rest accumulate a sleep timer; bodies that touch form
- * islands (union-find over touching contacts between moving bodies, the lower index
+ * islands (union-find over touching contacts and joints between moving bodies, the lower index
  * always the root, so the result is a pure function of the state); an island whose
  * every body has rested for time_to_sleep falls asleep at once. A sleeping body keeps
  * the lowest body index of its island, so waking one wakes the whole island. */
@@ -81,6 +81,8 @@ static int body_at_rest(const pg_world *w, const pg_body *b, int64_t lin_tol2, p
     return left >= 0 && v2 <= left * left;
 }
 
+static int body_still(const pg_body *b) { return b->v.x == 0 && b->v.y == 0 && b->w == 0; }
+
 void pg__update_sleep(pg_world *w)
 {
     uint32_t *parent = w->island_parent, i, n_contacts = w->contact_count;
@@ -114,6 +116,16 @@ void pg__update_sleep(pg_world *w)
         if (w->bodies[c->body_a].type == PG_BODY_DYNAMIC && w->bodies[c->body_b].type == PG_BODY_DYNAMIC)
             unite(parent, c->body_a, c->body_b);
     }
+    /* a joint links the islands of two dynamic bodies; one to a static or kinematic body
+     * does not (as a contact), but a kinematic body that moves keeps the other awake */
+    for (i = 0; i < w->joint_high; ++i) {
+        const pg_joint *j = &w->joints[i];
+        uint32_t a = j->body_a, b = j->body_b;
+        if ((j->flags & PG_JOINT_FLAG_USED) == 0 || a == PG_NULL_INDEX) continue;
+        if (parent[a] != PG_NULL_INDEX && parent[b] != PG_NULL_INDEX && w->bodies[a].type == PG_BODY_DYNAMIC &&
+            w->bodies[b].type == PG_BODY_DYNAMIC)
+            unite(parent, a, b);
+    }
     /* Each active body's root, kept in parent[i] so the loops below read it directly. The
      * root is the lowest index of its island (at most i) and is itself active, so its
      * min_time was initialised earlier in this same loop. */
@@ -124,6 +136,13 @@ void pg__update_sleep(pg_world *w)
         r = find_root(parent, i);
         parent[i] = r;
         if (w->bodies[i].sleep_time < min_time[r]) min_time[r] = w->bodies[i].sleep_time;
+    }
+    for (i = 0; i < w->joint_high; ++i) {
+        const pg_joint *j = &w->joints[i];
+        uint32_t a = j->body_a, b = j->body_b;
+        if ((j->flags & PG_JOINT_FLAG_USED) == 0 || a == PG_NULL_INDEX) continue;
+        if (w->bodies[a].type == PG_BODY_KINEMATIC && parent[b] != PG_NULL_INDEX && !body_still(&w->bodies[a])) min_time[parent[b]] = 0;
+        if (w->bodies[b].type == PG_BODY_KINEMATIC && parent[a] != PG_NULL_INDEX && !body_still(&w->bodies[b])) min_time[parent[a]] = 0;
     }
     /* An island still pushing out a deep overlap does not sleep: that push moves positions
      * only (docs/solver-design.md, DEEP PUSH), so its bodies look at rest while they are not. */
@@ -147,6 +166,20 @@ void pg__update_sleep(pg_world *w)
             b->w = 0;
             b->island = r;
         }
+    }
+}
+
+void pg__wake_joined_bodies(pg_world *world)
+{
+    uint32_t i;
+    for (i = 0; i < world->joint_high; ++i) {
+        const pg_joint *j = &world->joints[i];
+        const pg_body *a, *b;
+        if ((j->flags & PG_JOINT_FLAG_USED) == 0 || j->body_a == PG_NULL_INDEX) continue;
+        a = &world->bodies[j->body_a];
+        b = &world->bodies[j->body_b];
+        if (pg__body_is_active(a) && b->type == PG_BODY_DYNAMIC && !pg__body_is_active(b)) pg__wake_body(world, j->body_b);
+        if (pg__body_is_active(b) && a->type == PG_BODY_DYNAMIC && !pg__body_is_active(a)) pg__wake_body(world, j->body_a);
     }
 }
 

@@ -212,7 +212,7 @@ pg_result pg_replay_writer_add_checkpoint(pg_replay_writer *w, uint64_t hash, co
     if (!pg_replay_writer_checkpoint_due(w)) return PG_ERR_INVALID_ARGUMENT;
     {   /* the state hash must be the hash of the section hashes, as the reader checks */
         uint8_t le[8 * PG_SECTION_COUNT];
-        for (s = 0; s < PG_SECTION_COUNT; ++s) put_u64(le + 8u * s, sections[s]);
+        for (s = 0; s < PG_SECTION_COUNT; ++s) put_u64(le + (size_t)8u * s, sections[s]);
         if (hash != hash_of_sections(le, PG_SECTION_COUNT)) return PG_ERR_INVALID_ARGUMENT;
     }
     if (w->capacity - w->size < need) return PG_ERR_MEMORY;
@@ -220,7 +220,7 @@ pg_result pg_replay_writer_add_checkpoint(pg_replay_writer *w, uint64_t hash, co
     w->buffer[pos] = (uint8_t)PG_REPLAY_TAG_CHECKPOINT;
     put_u32(w->buffer + pos + 1, w->frame_count);
     put_u64(w->buffer + pos + 5, hash);
-    for (s = 0; s < PG_SECTION_COUNT; ++s) put_u64(w->buffer + pos + 13 + 8u * s, sections[s]);
+    for (s = 0; s < PG_SECTION_COUNT; ++s) put_u64(w->buffer + pos + 13 + (size_t)8u * s, sections[s]);
     pos += need - 8u;
     put_u64(w->buffer + pos, hash_range(w->buffer, w->block_start, pos));
     pos += 8u;
@@ -363,7 +363,7 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     in.section_count = get_u32(data + OFF_SECTIONS);
     if (in.flags != 0)
         return value_error(error, OFF_FLAGS, "header", "flags", -1, "flags ", in.flags,
-                           " are not defined in format version 2 (must be 0)");
+                           " are not defined in this format version (must be 0)");
     if (in.checkpoint_interval == 0)
         return value_error(error, OFF_INTERVAL, "header", "checkpoint_interval", -1, "checkpoint interval ", 0,
                            " is invalid (must be at least 1)");
@@ -590,7 +590,7 @@ static void read_checkpoint(const uint8_t *data, const pg_replay_info *info, siz
     if (hash != NULL) *hash = get_u64(data + off + 5);
     if (sections != NULL) {
         for (s = 0; s < PG_SECTION_COUNT; ++s)
-            sections[s] = s < info->section_count ? get_u64(data + off + 13 + 8u * s) : 0u;
+            sections[s] = s < info->section_count ? get_u64(data + off + 13 + (size_t)8u * s) : 0u;
     }
 }
 

@@ -88,6 +88,23 @@ static pg_result upgrade_1_to_2(const uint8_t *in, size_t size, uint32_t numeric
     return PG_OK;
 }
 
+/* Format 2 -> 3: the joint commands (kinds 24..33) are new, every format 2 record reads
+ * the same in format 3: the header's version changes, so its hash and the checksum do.
+ * Runs on `out` in place, after the format 2 file's own hashes were checked. */
+static void upgrade_2_to_3(uint8_t *out, size_t size)
+{
+    put_u16(out + 8, 3u);
+    put_u64(out + V2_HEADER_HASH, pg_hash_bytes(PG_HASH_SEED, out, V2_HEADER_HASH));
+    put_u64(out + size - 8u, pg_hash_bytes(PG_HASH_SEED, out, size - 8u));
+}
+
+static int v2_hashes_sound(const uint8_t *in, size_t size)
+{
+    return size >= (size_t)V2_HEADER_SIZE + 8u + PG_REPLAY_TRAILER_SIZE &&
+           pg_hash_bytes(PG_HASH_SEED, in, V2_HEADER_HASH) == get_u64(in + V2_HEADER_HASH) &&
+           pg_hash_bytes(PG_HASH_SEED, in, size - 8u) == get_u64(in + size - 8u);
+}
+
 pg_result pg_replay_upgrade(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
                             size_t *out_size, pg_replay_error *error)
 {
@@ -117,8 +134,15 @@ pg_result pg_replay_upgrade(const uint8_t *data, size_t size, uint32_t numeric_c
             return r;
         }
     } else {
+        if (version == 2u && !v2_hashes_sound(data, size)) {
+            if (out_size != NULL) *out_size = 0;
+            return fail(error, PG_ERR_INVALID_ARGUMENT, V2_HEADER_HASH, "header_hash",
+                        "header hash or file checksum mismatch in a format 2 file (header bytes 0..", V2_HEADER_HASH - 1,
+                        ", checksum in the last 8 bytes): the file is damaged");
+        }
         copy_bytes(out, data, size);
     }
+    if (version <= 2u) upgrade_2_to_3(out, need);
     /* the rest of the file (scene, records, block hashes), as the current reader sees it */
     r = pg_replay_read(out, need, &info, &inner);
     if (r == PG_ERR_INVALID_ARGUMENT || r == PG_ERR_NULL) {

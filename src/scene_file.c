@@ -15,9 +15,12 @@
  *   defaults are left out; numbers are shortest exact decimals (pg_fix_format). It reads
  *   the pools directly (world_internal.h): flags such as allow_sleep have no getter.
  */
+#include "pogon/joint.h"
 #include "pogon/scene_file.h"
 #include "chain.h"
 #include "decompose.h"
+#include "intmath.h"
+#include "joint_pool.h"
 #include "text.h"
 #include "world_internal.h"
 
@@ -97,7 +100,7 @@ enum { MODE_READ = 0, MODE_LOAD = 1 };
 
 /* Properties. A slot is what "given twice" is checked on (angle and angle_bits share one). */
 enum prop_id {
-    P_STEP_HZ, P_SUBSTEPS, P_GRAVITY, P_EFFECTS, P_MAX_BODIES, P_MAX_SHAPES, P_MAX_CONTACTS,
+    P_STEP_HZ, P_SUBSTEPS, P_GRAVITY, P_EFFECTS, P_MAX_BODIES, P_MAX_SHAPES, P_MAX_CONTACTS, P_MAX_JOINTS,
     P_CONTACT_HERTZ, P_CONTACT_DAMPING_RATIO, P_CONTACT_PUSH_MAX, P_RESTITUTION_THRESHOLD,
     P_MAX_LINEAR_SPEED, P_SLEEP_LINEAR_TOLERANCE, P_SLEEP_ANGULAR_TOLERANCE, P_TIME_TO_SLEEP,
     P_TYPE, P_POSITION, P_ANGLE, P_LINEAR_VELOCITY, P_ANGULAR_VELOCITY, P_LINEAR_DAMPING,
@@ -131,6 +134,7 @@ static const prop_info props_table[] = {
     {"max_bodies", P_MAX_BODIES, P_MAX_BODIES, CTX_SETTING},
     {"max_shapes", P_MAX_SHAPES, P_MAX_SHAPES, CTX_SETTING},
     {"max_contacts", P_MAX_CONTACTS, P_MAX_CONTACTS, CTX_SETTING},
+    {"max_joints", P_MAX_JOINTS, P_MAX_JOINTS, CTX_SETTING},
     {"contact_hertz", P_CONTACT_HERTZ, P_CONTACT_HERTZ, CTX_SETTING},
     {"contact_damping_ratio", P_CONTACT_DAMPING_RATIO, P_CONTACT_DAMPING_RATIO, CTX_SETTING},
     {"contact_push_max", P_CONTACT_PUSH_MAX, P_CONTACT_PUSH_MAX, CTX_SETTING},
@@ -165,6 +169,7 @@ static const char *const effect_names[7] = {"gravity", "rotation", "friction", "
 static const char *const type_names[3] = {"static", "kinematic", "dynamic"};
 
 /* The six ready-made kinds: keyword, number of sizes and their names. */
+/* NOLINTNEXTLINE(clang-analyzer-optin.performance.Padding): six constant rows; the fields stay in the order a row reads */
 typedef struct make_info {
     const char *name;
     int sizes;
@@ -233,6 +238,11 @@ typedef struct scene_parser {
     uint32_t room_bodies, room_shapes;
     int over_kind;
     uint32_t over_line, over_count;
+
+    /* joints: how many so far; READ for pg_scene_load: the world's free joint slots and
+     * the line of the first joint beyond them (0: they fit); LOAD: the slot of the
+     * file's body 0 */
+    uint32_t joints, room_joints, joint_over_line, body_base;
 } scene_parser;
 
 /* ---- errors (messages: text.h) ----------------------------------------------------------- */
@@ -385,7 +395,8 @@ static int token_is(const scene_parser *P, token t, const char *word)
 /* Does the token start like a number (so a vertex list goes on)? */
 static int looks_numeric(const scene_parser *P, token t)
 {
-    char c = t.len != 0 ? P->text[t.start] : 'x';
+    char c = 'x';
+    if (t.len != 0) c = P->text[t.start];
     return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.';
 }
 
@@ -440,8 +451,8 @@ static pg_result read_uint(scene_parser *P, const char *name, uint64_t max, uint
         char c = P->text[t.start + i];
         uint64_t d;
         if (c >= '0' && c <= '9') d = (uint64_t)(c - '0');
-        else if (base == 16 && c >= 'a' && c <= 'f') d = (uint64_t)(c - 'a' + 10);
-        else if (base == 16 && c >= 'A' && c <= 'F') d = (uint64_t)(c - 'A' + 10);
+        else if (base == 16 && c >= 'a' && c <= 'f') d = (uint64_t)(c - 'a') + 10u;
+        else if (base == 16 && c >= 'A' && c <= 'F') d = (uint64_t)(c - 'A') + 10u;
         else return fail_expected(P, t, base == 16 ? "a hexadecimal integer" : "an integer", name, NULL);
         if (v > (UINT64_MAX - d) / (uint64_t)base) overflow = 1;
         else v = v * (uint64_t)base + d;
@@ -604,6 +615,7 @@ static pg_result read_setting(scene_parser *P, const prop_info *info)
     case P_MAX_BODIES: return read_u32(P, n, 1, 1u << 24, &d->max_bodies);
     case P_MAX_SHAPES: return read_u32(P, n, 1, 1u << 24, &d->max_shapes);
     case P_MAX_CONTACTS: return read_u32(P, n, 1, 1u << 24, &d->max_contacts);
+    case P_MAX_JOINTS: return read_u32(P, n, 0, 1u << 24, &d->max_joints);
     case P_CONTACT_HERTZ: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 1, "(0, 1000] Hz", &d->contact_hertz);
     case P_CONTACT_DAMPING_RATIO: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 0, "0..1000", &d->contact_damping_ratio);
     case P_CONTACT_PUSH_MAX: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 1, "(0, 1000] m/s", &d->contact_push_max);
@@ -1303,6 +1315,428 @@ static int make_kind_of(const scene_parser *P, token t)
     return -1;
 }
 
+/* ---- joints ------------------------------------------------------------------------------------------------ */
+/* joint KIND A B [properties]   (mouse: joint mouse B [properties])
+ * A and B are body numbers: the file's bodies counted from 0 in file order, each above
+ * the joint line. Property names are the fields of the kind's def (pogon/joint.h);
+ * anchors are in each body's frame, as the defs take them. */
+enum jprop_id {
+    J_LOCAL_ANCHOR_A, J_LOCAL_ANCHOR_B, J_LENGTH, J_ENABLE_SPRING, J_HERTZ, J_DAMPING_RATIO,
+    J_ENABLE_LIMIT, J_MIN_LENGTH, J_MAX_LENGTH, J_REFERENCE_ANGLE, J_LOWER_ANGLE, J_UPPER_ANGLE,
+    J_ENABLE_MOTOR, J_MOTOR_SPEED, J_MAX_MOTOR_TORQUE, J_LINEAR_HERTZ, J_LINEAR_DAMPING_RATIO,
+    J_ANGULAR_HERTZ, J_ANGULAR_DAMPING_RATIO, J_LOCAL_AXIS_A, J_LOWER_TRANSLATION,
+    J_UPPER_TRANSLATION, J_MAX_MOTOR_FORCE, J_TARGET, J_MAX_FORCE, J_COLLIDE_CONNECTED, J_USER_DATA,
+    J_REFERENCE_ANGLE_BITS, /* shares the slot of J_REFERENCE_ANGLE */
+    J_COUNT
+};
+#define JK_D (1u << PG_JOINT_DISTANCE)
+#define JK_R (1u << PG_JOINT_REVOLUTE)
+#define JK_W (1u << PG_JOINT_WELD)
+#define JK_P (1u << PG_JOINT_PRISMATIC)
+#define JK_M (1u << PG_JOINT_MOUSE)
+#define JK_TWO (JK_D | JK_R | JK_W | JK_P) /* the kinds that join two bodies */
+
+typedef struct jprop_info {
+    const char *name;
+    uint8_t id, slot, kinds;
+} jprop_info;
+
+static const jprop_info jprops_table[] = {
+    {"local_anchor_a", J_LOCAL_ANCHOR_A, J_LOCAL_ANCHOR_A, JK_TWO},
+    {"local_anchor_b", J_LOCAL_ANCHOR_B, J_LOCAL_ANCHOR_B, JK_TWO | JK_M},
+    {"length", J_LENGTH, J_LENGTH, JK_D},
+    {"enable_spring", J_ENABLE_SPRING, J_ENABLE_SPRING, JK_D},
+    {"hertz", J_HERTZ, J_HERTZ, JK_D | JK_M},
+    {"damping_ratio", J_DAMPING_RATIO, J_DAMPING_RATIO, JK_D | JK_M},
+    {"enable_limit", J_ENABLE_LIMIT, J_ENABLE_LIMIT, JK_D | JK_R | JK_P},
+    {"min_length", J_MIN_LENGTH, J_MIN_LENGTH, JK_D},
+    {"max_length", J_MAX_LENGTH, J_MAX_LENGTH, JK_D},
+    {"reference_angle", J_REFERENCE_ANGLE, J_REFERENCE_ANGLE, JK_R | JK_W | JK_P},
+    {"reference_angle_bits", J_REFERENCE_ANGLE_BITS, J_REFERENCE_ANGLE, JK_R | JK_W | JK_P},
+    {"lower_angle", J_LOWER_ANGLE, J_LOWER_ANGLE, JK_R},
+    {"upper_angle", J_UPPER_ANGLE, J_UPPER_ANGLE, JK_R},
+    {"enable_motor", J_ENABLE_MOTOR, J_ENABLE_MOTOR, JK_R | JK_P},
+    {"motor_speed", J_MOTOR_SPEED, J_MOTOR_SPEED, JK_R | JK_P},
+    {"max_motor_torque", J_MAX_MOTOR_TORQUE, J_MAX_MOTOR_TORQUE, JK_R},
+    {"linear_hertz", J_LINEAR_HERTZ, J_LINEAR_HERTZ, JK_W},
+    {"linear_damping_ratio", J_LINEAR_DAMPING_RATIO, J_LINEAR_DAMPING_RATIO, JK_W},
+    {"angular_hertz", J_ANGULAR_HERTZ, J_ANGULAR_HERTZ, JK_W},
+    {"angular_damping_ratio", J_ANGULAR_DAMPING_RATIO, J_ANGULAR_DAMPING_RATIO, JK_W},
+    {"local_axis_a", J_LOCAL_AXIS_A, J_LOCAL_AXIS_A, JK_P},
+    {"lower_translation", J_LOWER_TRANSLATION, J_LOWER_TRANSLATION, JK_P},
+    {"upper_translation", J_UPPER_TRANSLATION, J_UPPER_TRANSLATION, JK_P},
+    {"max_motor_force", J_MAX_MOTOR_FORCE, J_MAX_MOTOR_FORCE, JK_P},
+    {"target", J_TARGET, J_TARGET, JK_M},
+    {"max_force", J_MAX_FORCE, J_MAX_FORCE, JK_M},
+    {"collide_connected", J_COLLIDE_CONNECTED, J_COLLIDE_CONNECTED, JK_TWO},
+    {"user_data", J_USER_DATA, J_USER_DATA, JK_TWO | JK_M},
+};
+#define JPROPS_TABLE_COUNT (sizeof jprops_table / sizeof jprops_table[0])
+
+static const char *const joint_kind_names[PG_JOINT_TYPE_COUNT] = {"distance", "revolute", "weld", "prismatic", "mouse"};
+
+#define JOINT_LENGTH_MIN ((pg_fix)328) /* 0.005 m, as pg_distance_joint_create */
+#define JOINT_LENGTH_MAX PG_FIX_C(100)
+
+/* One joint line: the kind's fields, named as in the defs, in one struct (the pg_joint
+ * layout: lower/upper hold min/max length, angles or translations; max_motor the
+ * torque, force or mouse force; hertz2/damping2 the weld's angular softness). */
+typedef struct joint_line {
+    pg_joint_type kind;
+    uint32_t body[2];          /* body numbers; a mouse joint has body[1] only */
+    uint32_t body_column[2];
+    uint32_t seen, column[J_COUNT];
+    pg_vec2 anchor_a, anchor_b, axis, target;
+    pg_angle reference_angle;
+    pg_fix length, hertz, damping, hertz2, damping2, lower, upper, motor_speed, max_motor;
+    int enable_spring, enable_limit, enable_motor, collide;
+    uint64_t user_data;
+} joint_line;
+
+static void joint_line_init(joint_line *J, pg_joint_type kind)
+{
+    size_t i;
+    unsigned char *p = (unsigned char *)J;
+    for (i = 0; i < sizeof *J; ++i) p[i] = 0;
+    J->kind = kind;
+    J->axis = pg_v2(PG_FIX_ONE, 0);
+    J->length = PG_FIX_ONE;
+    if (kind == PG_JOINT_DISTANCE) J->upper = JOINT_LENGTH_MAX;
+    if (kind == PG_JOINT_MOUSE) {
+        pg_mouse_joint_def md = pg_default_mouse_joint_def();
+        J->hertz = md.hertz;
+        J->damping = md.damping_ratio;
+        J->max_motor = md.max_force;
+    }
+}
+
+static const jprop_info *find_jprop(const scene_parser *P, token t)
+{
+    size_t i;
+    for (i = 0; i < JPROPS_TABLE_COUNT; ++i)
+        if (token_is(P, t, jprops_table[i].name)) return &jprops_table[i];
+    return NULL;
+}
+
+static pg_result read_vec(scene_parser *P, const char *name, pg_vec2 *out)
+{
+    pg_result r = read_fix(P, name, "x", &out->x, NULL);
+    return r != PG_OK ? r : read_fix(P, name, "y", &out->y, NULL);
+}
+
+static pg_result read_jprop(scene_parser *P, const jprop_info *info, joint_line *J)
+{
+    const char *n = info->name;
+    const pg_fix K = PG_FIX_C(1000);
+    pg_result r;
+    uint64_t v = 0;
+    switch (info->id) {
+    case J_LOCAL_ANCHOR_A: return read_vec(P, n, &J->anchor_a);
+    case J_LOCAL_ANCHOR_B: return read_vec(P, n, &J->anchor_b);
+    case J_LENGTH: return read_fix_in(P, n, NULL, JOINT_LENGTH_MIN, JOINT_LENGTH_MAX, 0, "0.005..100 m", &J->length);
+    case J_ENABLE_SPRING: return read_flag(P, n, &J->enable_spring);
+    case J_HERTZ:
+        if (J->kind == PG_JOINT_MOUSE) return read_fix_in(P, n, NULL, 0, K, 1, "(0, 1000] Hz", &J->hertz);
+        return read_fix_in(P, n, NULL, 0, K, 0, "0..1000 Hz", &J->hertz);
+    case J_DAMPING_RATIO: return read_fix_in(P, n, NULL, 0, K, 0, "0..1000", &J->damping);
+    case J_ENABLE_LIMIT: return read_flag(P, n, &J->enable_limit);
+    case J_MIN_LENGTH: return read_fix_in(P, n, NULL, 0, JOINT_LENGTH_MAX, 0, "0..100 m", &J->lower);
+    case J_MAX_LENGTH: return read_fix_in(P, n, NULL, 0, JOINT_LENGTH_MAX, 0, "0..100 m", &J->upper);
+    case J_REFERENCE_ANGLE: {
+        pg_fix degrees = 0;
+        r = read_fix(P, n, "degrees", &degrees, NULL);
+        J->reference_angle = pg_scene_angle_from_degrees(degrees);
+        return r;
+    }
+    case J_REFERENCE_ANGLE_BITS:
+        r = read_uint(P, n, 0xFFFFFFFFu, &v, NULL);
+        J->reference_angle = (pg_angle)(v & 0xFFFFFFFFu);
+        return r;
+    case J_LOWER_ANGLE: return read_fix_in(P, n, NULL, -PG_FIX_PI, PG_FIX_PI, 0, "-pi..pi rad", &J->lower);
+    case J_UPPER_ANGLE: return read_fix_in(P, n, NULL, -PG_FIX_PI, PG_FIX_PI, 0, "-pi..pi rad", &J->upper);
+    case J_ENABLE_MOTOR: return read_flag(P, n, &J->enable_motor);
+    case J_MOTOR_SPEED: return read_fix_in(P, n, NULL, -K, K, 0, "-1000..1000", &J->motor_speed);
+    case J_MAX_MOTOR_TORQUE: return read_fix_in(P, n, NULL, 0, PG_FIX_MAX, 0, ">= 0 N m", &J->max_motor);
+    case J_LINEAR_HERTZ: return read_fix_in(P, n, NULL, 0, K, 0, "0..1000 Hz", &J->hertz);
+    case J_LINEAR_DAMPING_RATIO: return read_fix_in(P, n, NULL, 0, K, 0, "0..1000", &J->damping);
+    case J_ANGULAR_HERTZ: return read_fix_in(P, n, NULL, 0, K, 0, "0..1000 Hz", &J->hertz2);
+    case J_ANGULAR_DAMPING_RATIO: return read_fix_in(P, n, NULL, 0, K, 0, "0..1000", &J->damping2);
+    case J_LOCAL_AXIS_A: return read_vec(P, n, &J->axis);
+    case J_LOWER_TRANSLATION: return read_fix_in(P, n, NULL, -JOINT_LENGTH_MAX, JOINT_LENGTH_MAX, 0, "-100..100 m", &J->lower);
+    case J_UPPER_TRANSLATION: return read_fix_in(P, n, NULL, -JOINT_LENGTH_MAX, JOINT_LENGTH_MAX, 0, "-100..100 m", &J->upper);
+    case J_MAX_MOTOR_FORCE: return read_fix_in(P, n, NULL, 0, PG_FIX_MAX, 0, ">= 0 N", &J->max_motor);
+    case J_TARGET:
+        r = read_fix_in(P, n, "x", -PG_ENV_MAX_POSITION, PG_ENV_MAX_POSITION, 0, POS_LIMIT, &J->target.x);
+        return r != PG_OK ? r : read_fix_in(P, n, "y", -PG_ENV_MAX_POSITION, PG_ENV_MAX_POSITION, 0, POS_LIMIT, &J->target.y);
+    case J_MAX_FORCE: return read_fix_in(P, n, NULL, 0, PG_FIX_MAX, 0, ">= 0 N", &J->max_motor);
+    case J_COLLIDE_CONNECTED: return read_flag(P, n, &J->collide);
+    default: return read_uint(P, n, UINT64_MAX, &J->user_data, NULL); /* J_USER_DATA */
+    }
+}
+
+static pg_result read_jprops(scene_parser *P, joint_line *J)
+{
+    for (;;) {
+        token t = next_token(P);
+        const jprop_info *info;
+        msg m;
+        if (t.len == 0) return PG_OK;
+        info = find_jprop(P, t);
+        if (info == NULL || (info->kinds & (1u << J->kind)) == 0) {
+            m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+            pg__text_put(&m, "expected a property of a ");
+            pg__text_put(&m, joint_kind_names[J->kind]);
+            pg__text_put(&m, " joint, got ");
+            msg_token(&m, P, t);
+            return P->result;
+        }
+        if ((J->seen & (1u << info->slot)) != 0) {
+            m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
+            pg__text_put(&m, "'");
+            pg__text_put(&m, info->name);
+            pg__text_put(&m, "' is given twice for a joint");
+            return P->result;
+        }
+        J->seen |= 1u << info->slot;
+        J->column[info->slot] = token_column(P, peek_token(P));
+        {
+            pg_result r = read_jprop(P, info, J);
+            if (r != PG_OK) return r;
+        }
+    }
+}
+
+/* The type of the file's body number k (above the current line), found by reading the
+ * text again from its start: the reader keeps no table of bodies (it allocates nothing
+ * and a scene may hold 2^24 bodies). The text up to here has been checked already. */
+static pg_body_type scene_body_type(scene_parser *P, uint32_t k)
+{
+    const size_t next_line = P->next_line, line_start = P->line_start, line_end = P->line_end;
+    const size_t content_end = P->content_end, at = P->at, last_end = P->last_end;
+    const uint32_t line = P->line;
+    uint32_t count = 0;
+    int in_block = 0, i;
+    pg_body_type type = PG_BODY_DYNAMIC;
+    P->next_line = 0;
+    P->line = 0;
+    while (P->line + 1u < line && load_line(P) > 0) {
+        token t = next_token(P);
+        int kind;
+        if (P->line == 1 || t.len == 0) continue;
+        if (in_block) {
+            if (token_is(P, t, "end")) in_block = 0;
+            continue;
+        }
+        if (token_is(P, t, "body")) {
+            if (count == k) {
+                token ty = next_token(P);
+                for (i = 0; i < 3; ++i)
+                    if (token_is(P, ty, type_names[i])) type = (pg_body_type)i;
+                break;
+            }
+            in_block = 1;
+            ++count;
+            continue;
+        }
+        kind = make_kind_of(P, t);
+        if (kind < 0) continue;
+        if (count == k) {
+            type = kind == 5 ? PG_BODY_STATIC : PG_BODY_DYNAMIC;
+            for (t = next_token(P); t.len != 0; t = next_token(P))
+                if (token_is(P, t, "type")) {
+                    token ty = next_token(P);
+                    for (i = 0; i < 3; ++i)
+                        if (token_is(P, ty, type_names[i])) type = (pg_body_type)i;
+                }
+            break;
+        }
+        ++count;
+    }
+    P->next_line = next_line;
+    P->line_start = line_start;
+    P->line_end = line_end;
+    P->content_end = content_end;
+    P->at = at;
+    P->last_end = last_end;
+    P->line = line;
+    return type;
+}
+
+static pg_result fail_joint(scene_parser *P, pg_result r, uint32_t column, const char *what)
+{
+    msg m = fail(P, r, column);
+    pg__text_put(&m, what);
+    return P->result;
+}
+
+static pg_result check_joint_anchor(scene_parser *P, const joint_line *J, int slot, pg_vec2 a, pg_body_type type)
+{
+    pg_fix limit = type == PG_BODY_STATIC ? PG_ENV_MAX_POSITION : PG_FIX_C(50);
+    if (a.x < -limit || a.x > limit || a.y < -limit || a.y > limit) {
+        msg m = fail(P, PG_ERR_ENVELOPE, J->column[slot]);
+        pg__text_put(&m, slot == J_LOCAL_ANCHOR_A ? "'local_anchor_a'" : "'local_anchor_b'");
+        pg__text_put(&m, type == PG_BODY_STATIC ? " is beyond 1000 m of its static body's origin"
+                                                : " is beyond 50 m of its moving body's origin");
+        return P->result;
+    }
+    return PG_OK;
+}
+
+/* READ: what the create call would refuse, found from the text alone. */
+static pg_result check_joint_line(scene_parser *P, const joint_line *J)
+{
+    pg_body_type ta = PG_BODY_STATIC, tb = scene_body_type(P, J->body[1]);
+    pg_result r;
+    if (J->kind == PG_JOINT_MOUSE) {
+        if (tb != PG_BODY_DYNAMIC) return fail_joint(P, PG_ERR_BODY_TYPE, J->body_column[1], "a mouse joint's body must be dynamic");
+        return check_joint_anchor(P, J, J_LOCAL_ANCHOR_B, J->anchor_b, tb);
+    }
+    if (J->body[0] == J->body[1]) return fail_joint(P, PG_ERR_INVALID_ARGUMENT, J->body_column[1], "a joint joins two different bodies");
+    ta = scene_body_type(P, J->body[0]);
+    if (ta == PG_BODY_STATIC && tb == PG_BODY_STATIC)
+        return fail_joint(P, PG_ERR_BODY_TYPE, J->body_column[0], "both bodies are static: at least one must be able to move");
+    if ((r = check_joint_anchor(P, J, J_LOCAL_ANCHOR_A, J->anchor_a, ta)) != PG_OK) return r;
+    if ((r = check_joint_anchor(P, J, J_LOCAL_ANCHOR_B, J->anchor_b, tb)) != PG_OK) return r;
+    if (J->lower > J->upper && J->kind != PG_JOINT_WELD) {
+        static const int lower_slot[PG_JOINT_TYPE_COUNT] = {J_MIN_LENGTH, J_LOWER_ANGLE, 0, J_LOWER_TRANSLATION, 0};
+        static const char *const what[PG_JOINT_TYPE_COUNT] = {"'min_length' is above 'max_length'", "'lower_angle' is above 'upper_angle'", "",
+                                                              "'lower_translation' is above 'upper_translation'", ""};
+        return fail_joint(P, PG_ERR_INVALID_ARGUMENT, J->column[lower_slot[J->kind]] != 0 ? J->column[lower_slot[J->kind]] : 1u, what[J->kind]);
+    }
+    if (J->kind == PG_JOINT_PRISMATIC) {
+        int64_t x = J->axis.x, y = J->axis.y;
+        if (J->axis.x < PG_FIX_MIN || J->axis.y < PG_FIX_MIN || pg__sqrt_nearest((uint64_t)(x * x + y * y)) < 66u)
+            return fail_joint(P, PG_ERR_DEGENERATE, J->column[J_LOCAL_AXIS_A], "'local_axis_a' has no direction: give a nonzero vector");
+    }
+    return PG_OK;
+}
+
+/* LOAD: the handle of the file's body number k. pg_scene_load refuses a scene with
+ * joints unless the world's body slots are used without gaps, so the file's bodies took
+ * the slots from body_base up. */
+static pg_body_id scene_body_id(const scene_parser *P, uint32_t k)
+{
+    pg_body_id id;
+    id.index = P->body_base + k;
+    id.generation = P->world->bodies[id.index].generation;
+    return id;
+}
+
+static pg_result make_joint(scene_parser *P, const joint_line *J)
+{
+    pg_world *w = P->world;
+    pg_joint_id id;
+    pg_result r;
+    pg_body_id a = scene_body_id(P, J->body[0]), b = scene_body_id(P, J->body[1]);
+    switch (J->kind) {
+    case PG_JOINT_DISTANCE: {
+        pg_distance_joint_def d = pg_default_distance_joint_def();
+        d.body_a = a, d.body_b = b, d.local_anchor_a = J->anchor_a, d.local_anchor_b = J->anchor_b;
+        d.length = J->length, d.enable_spring = J->enable_spring, d.hertz = J->hertz, d.damping_ratio = J->damping;
+        d.enable_limit = J->enable_limit, d.min_length = J->lower, d.max_length = J->upper;
+        d.collide_connected = J->collide, d.user_data = J->user_data;
+        r = pg_distance_joint_create(w, &d, &id);
+        break;
+    }
+    case PG_JOINT_REVOLUTE: {
+        pg_revolute_joint_def d = pg_default_revolute_joint_def();
+        d.body_a = a, d.body_b = b, d.local_anchor_a = J->anchor_a, d.local_anchor_b = J->anchor_b;
+        d.reference_angle = J->reference_angle, d.enable_limit = J->enable_limit, d.lower_angle = J->lower, d.upper_angle = J->upper;
+        d.enable_motor = J->enable_motor, d.motor_speed = J->motor_speed, d.max_motor_torque = J->max_motor;
+        d.collide_connected = J->collide, d.user_data = J->user_data;
+        r = pg_revolute_joint_create(w, &d, &id);
+        break;
+    }
+    case PG_JOINT_WELD: {
+        pg_weld_joint_def d = pg_default_weld_joint_def();
+        d.body_a = a, d.body_b = b, d.local_anchor_a = J->anchor_a, d.local_anchor_b = J->anchor_b;
+        d.reference_angle = J->reference_angle, d.linear_hertz = J->hertz, d.linear_damping_ratio = J->damping;
+        d.angular_hertz = J->hertz2, d.angular_damping_ratio = J->damping2;
+        d.collide_connected = J->collide, d.user_data = J->user_data;
+        r = pg_weld_joint_create(w, &d, &id);
+        break;
+    }
+    case PG_JOINT_PRISMATIC: {
+        pg_prismatic_joint_def d = pg_default_prismatic_joint_def();
+        d.body_a = a, d.body_b = b, d.local_anchor_a = J->anchor_a, d.local_anchor_b = J->anchor_b;
+        d.local_axis_a = J->axis, d.reference_angle = J->reference_angle;
+        d.enable_limit = J->enable_limit, d.lower_translation = J->lower, d.upper_translation = J->upper;
+        d.enable_motor = J->enable_motor, d.motor_speed = J->motor_speed, d.max_motor_force = J->max_motor;
+        d.collide_connected = J->collide, d.user_data = J->user_data;
+        r = pg_prismatic_joint_create(w, &d, &id);
+        break;
+    }
+    default: {
+        /* made at the body's origin, then given the file's anchor and target: the
+         * anchor is state, not "the body point under the target" */
+        pg_mouse_joint_def d = pg_default_mouse_joint_def();
+        d.body = b, d.target = w->bodies[b.index].origin;
+        d.hertz = J->hertz, d.damping_ratio = J->damping, d.max_force = J->max_motor, d.user_data = J->user_data;
+        r = pg_mouse_joint_create(w, &d, &id);
+        if (r == PG_OK) r = pg_mouse_joint_set_target(w, id, J->target);
+        if (r == PG_OK) pg__joint(w, id)->anchor_b = J->anchor_b;
+        break;
+    }
+    }
+    if (r != PG_OK) {
+        P->result = r;
+        return fail_world(P, "cannot create the joint");
+    }
+    return PG_OK;
+}
+
+/* joint KIND [A] B [properties] */
+static pg_result parse_joint(scene_parser *P)
+{
+    joint_line J;
+    token t = next_token(P);
+    int kind, i, first;
+    pg_result r;
+    for (kind = 0; kind < PG_JOINT_TYPE_COUNT; ++kind)
+        if (token_is(P, t, joint_kind_names[kind])) break;
+    if (kind == PG_JOINT_TYPE_COUNT) return fail_expected(P, t, "a joint kind (distance revolute weld prismatic mouse)", "joint", NULL);
+    joint_line_init(&J, (pg_joint_type)kind);
+    first = kind == PG_JOINT_MOUSE ? 1 : 0;
+    for (i = first; i < 2; ++i) {
+        uint64_t v = 0;
+        const char *name = i == 0 ? "body_a" : kind == PG_JOINT_MOUSE ? "body" : "body_b";
+        r = read_uint(P, name, 0xFFFFFFFFu, &v, &J.body_column[i]);
+        if (r != PG_OK) return r;
+        if (v >= P->bodies) {
+            msg m = fail(P, PG_ERR_INVALID_ARGUMENT, J.body_column[i]);
+            pg__text_put(&m, "there is no body ");
+            pg__text_u64(&m, v);
+            pg__text_put(&m, " above this line: a joint names bodies by their number in the file, from 0 (");
+            pg__text_u64(&m, P->bodies);
+            pg__text_put(&m, " so far)");
+            return P->result;
+        }
+        J.body[i] = (uint32_t)v;
+    }
+    if (kind == PG_JOINT_MOUSE) J.body[0] = J.body[1];
+    r = read_jprops(P, &J);
+    if (r != PG_OK) return r;
+    P->joints = P->joints < 0xFFFFFFFFu ? P->joints + 1u : P->joints;
+    if (P->mode == MODE_READ) {
+        r = check_joint_line(P, &J);
+        if (r != PG_OK) return r;
+        if ((P->settings_seen & ((uint64_t)1 << P_MAX_JOINTS)) != 0 && P->joints > P->def.max_joints) {
+            msg m = fail(P, PG_ERR_CAPACITY, 1);
+            pg__text_put(&m, "joint ");
+            pg__text_u64(&m, P->joints);
+            pg__text_put(&m, " is beyond max_joints ");
+            pg__text_u64(&m, P->def.max_joints);
+            pg__text_put(&m, " (line ");
+            pg__text_u64(&m, P->setting_line[P_MAX_JOINTS]);
+            pg__text_put(&m, ")");
+            return P->result;
+        }
+        if (P->room_given && P->joints > P->room_joints && P->joint_over_line == 0) P->joint_over_line = P->line;
+        return PG_OK;
+    }
+    return make_joint(P, &J);
+}
+
 static pg_result parse_statement(scene_parser *P, token t)
 {
     const prop_info *info = find_prop(P, t);
@@ -1322,7 +1756,8 @@ static pg_result parse_statement(scene_parser *P, token t)
             P->at = t.start;
             return read_props(P, CTX_BODY, &P->body, "a body");
         }
-        if (token_is(P, t, "body") || make_kind_of(P, t) >= 0 || token_is(P, t, "concave") || token_is(P, t, "chain")) {
+        if (token_is(P, t, "body") || token_is(P, t, "joint") || make_kind_of(P, t) >= 0 || token_is(P, t, "concave") ||
+            token_is(P, t, "chain")) {
             m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
             pg__text_put(&m, "expected 'end' to close the body of line ");
             pg__text_u64(&m, P->body_line);
@@ -1353,6 +1788,10 @@ static pg_result parse_statement(scene_parser *P, token t)
         P->bodies_started = 1;
         return token_is(P, t, "concave") ? parse_concave(P, t) : parse_chain(P, t);
     }
+    if (token_is(P, t, "joint")) {
+        P->bodies_started = 1;
+        return parse_joint(P);
+    }
     if (token_is(P, t, "end") || token_is(P, t, "shape")) {
         m = fail(P, PG_ERR_INVALID_ARGUMENT, token_column(P, t));
         msg_token(&m, P, t);
@@ -1366,7 +1805,7 @@ static pg_result parse_statement(scene_parser *P, token t)
         pg__text_put(&m, "' outside a body: put it inside 'body' ... 'end' or on a ready-made line");
         return P->result;
     }
-    return fail_expected(P, t, "a setting, 'body' or a ready-made kind (ball capsule box triangle star wall concave chain)", NULL, NULL);
+    return fail_expected(P, t, "a setting, 'body', a ready-made kind (ball capsule box triangle star wall concave chain) or 'joint'", NULL, NULL);
 }
 
 static pg_result run(scene_parser *P)
@@ -1442,6 +1881,7 @@ static void finish_def(scene_parser *P)
     if ((P->settings_seen & ((uint64_t)1 << P_MAX_BODIES)) == 0) P->def.max_bodies = P->bodies < 1 ? 1u : P->bodies > (1u << 24) ? 1u << 24 : P->bodies;
     if ((P->settings_seen & ((uint64_t)1 << P_MAX_SHAPES)) == 0) P->def.max_shapes = P->shapes < 1 ? 1u : P->shapes > (1u << 24) ? 1u << 24 : P->shapes;
     if ((P->settings_seen & ((uint64_t)1 << P_MAX_CONTACTS)) == 0) P->def.max_contacts = contacts > (1u << 24) ? 1u << 24 : (uint32_t)contacts;
+    if ((P->settings_seen & ((uint64_t)1 << P_MAX_JOINTS)) == 0 && P->joints > P->def.max_joints) P->def.max_joints = P->joints > (1u << 24) ? 1u << 24 : P->joints;
 }
 
 pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, pg_scene_error *error)
@@ -1476,6 +1916,33 @@ static int differing_setting(const pg_world_def *a, const pg_world_def *b)
     return -1;
 }
 
+/* After a READ pass of a scene with joints: the world must have room for them, and its
+ * body slots must be used without gaps, so that the file's bodies take the slots from
+ * body_high up and its body numbers name them. */
+static pg_result check_joint_room(scene_parser *P, const pg_world *world)
+{
+    msg m;
+    if (P->joints == 0) return PG_OK;
+    if (world->body_count != world->body_high) {
+        P->line = 1;
+        m = fail(P, PG_ERR_INVALID_ARGUMENT, 1);
+        pg__text_put(&m, "a scene with joints loads into a world whose body slots have no gaps (no body destroyed): its joints name bodies by number");
+        return P->result;
+    }
+    if (P->joint_over_line != 0) {
+        P->line = P->joint_over_line;
+        m = fail(P, PG_ERR_CAPACITY, 1);
+        pg__text_put(&m, "the scene's ");
+        pg__text_u64(&m, P->joints);
+        pg__text_put(&m, " joints do not fit: the world has ");
+        pg__text_u64(&m, P->room_joints);
+        pg__text_put(&m, " free joint slots of max_joints ");
+        pg__text_u64(&m, world->def.max_joints);
+        return P->result;
+    }
+    return PG_OK;
+}
+
 pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_scene_error *error)
 {
     scene_parser P;
@@ -1489,6 +1956,7 @@ pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_sce
     P.room_given = 1; /* and note where the scene outgrows the world's free slots */
     P.room_bodies = wd.max_bodies - world->body_count;
     P.room_shapes = wd.max_shapes - world->shape_count;
+    P.room_joints = wd.max_joints - world->joint_count;
     r = run(&P);
     if (r != PG_OK) return r;
     which = differing_setting(&wd, &P.def);
@@ -1519,7 +1987,10 @@ pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_sce
         pg__text_u64(&m, bodies ? P.bodies : P.shapes);
         return P.result;
     }
+    r = check_joint_room(&P, world);
+    if (r != PG_OK) return r;
     parser_init(&P, text, length, error, world);
+    P.body_base = world->body_high;
     return run(&P);
 }
 
@@ -1590,6 +2061,7 @@ static void write_settings(text_out *o, const pg_world_def *d)
     put_setting_u64(o, "max_bodies", d->max_bodies);
     put_setting_u64(o, "max_shapes", d->max_shapes);
     put_setting_u64(o, "max_contacts", d->max_contacts);
+    put_setting_u64(o, "max_joints", d->max_joints);
 }
 
 static void write_shape(text_out *o, const pg_shape *s)
@@ -1667,11 +2139,114 @@ static void write_body(text_out *o, const pg_world *world, const pg_body *b)
     if (b->gravity_scale != PG_FIX_ONE) put_str(o, "  gravity_scale "), put_fix(o, b->gravity_scale), put_char(o, '\n');
     if ((b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) put_str(o, "  fixed_rotation 1\n");
     if ((b->flags & PG_BODY_FLAG_ALLOW_SLEEP) == 0) put_str(o, "  allow_sleep 0\n");
-    if ((b->flags & PG_BODY_FLAG_AWAKE) == 0) put_str(o, "  awake 0\n");
+    /* a joint wakes its bodies as it is made, so a body with joints loads awake */
+    if ((b->flags & PG_BODY_FLAG_AWAKE) == 0 && b->first_joint == PG_NULL_INDEX) put_str(o, "  awake 0\n");
     if (b->user_data != 0) put_str(o, "  user_data "), put_u64(o, b->user_data), put_char(o, '\n');
     for (s = b->first_shape; s != PG_NULL_INDEX && s < world->def.max_shapes && n < 64u; s = world->shapes[s].next, ++n)
         write_shape(o, &world->shapes[s]);
     put_str(o, "end\n");
+}
+
+/* The file number of the body in `slot`: bodies are written in slot order, compacted. */
+static uint32_t body_number(const pg_world *world, uint32_t slot)
+{
+    uint32_t i, n = 0;
+    for (i = 0; i < slot && i < world->body_high; ++i)
+        if ((world->bodies[i].flags & PG_BODY_FLAG_USED) != 0) ++n;
+    return n;
+}
+
+static void put_jfix(text_out *o, const char *name, pg_fix v, pg_fix dflt)
+{
+    if (v == dflt) return;
+    put_char(o, ' ');
+    put_str(o, name);
+    put_char(o, ' ');
+    put_fix(o, v);
+}
+
+static void put_jvec(text_out *o, const char *name, pg_vec2 v, pg_vec2 dflt)
+{
+    if (v.x == dflt.x && v.y == dflt.y) return;
+    put_char(o, ' ');
+    put_str(o, name);
+    put_point(o, v);
+}
+
+static void put_jflag(text_out *o, const pg_joint *j, uint32_t flag, const char *name)
+{
+    if ((j->flags & flag) != 0) put_char(o, ' '), put_str(o, name), put_str(o, " 1");
+}
+
+static void put_reference_angle(text_out *o, pg_angle a)
+{
+    pg_fix degrees = degrees_from_angle(a);
+    if (a == 0) return;
+    if (pg_scene_angle_from_degrees(degrees) == a) put_str(o, " reference_angle "), put_fix(o, degrees);
+    else put_str(o, " reference_angle_bits "), put_hex(o, a);
+}
+
+/* joint KIND A B with the fields that differ from the kind's defaults */
+static void write_joint(text_out *o, const pg_world *world, const pg_joint *j)
+{
+    const pg_vec2 zero = pg_v2_zero();
+    put_str(o, "joint ");
+    put_str(o, joint_kind_names[j->type < PG_JOINT_TYPE_COUNT ? j->type : 0]);
+    if (j->type != PG_JOINT_MOUSE) put_char(o, ' '), put_u64(o, body_number(world, j->body_a));
+    put_char(o, ' ');
+    put_u64(o, body_number(world, j->body_b));
+    if (j->type != PG_JOINT_MOUSE) put_jvec(o, "local_anchor_a", j->anchor_a, zero);
+    put_jvec(o, "local_anchor_b", j->anchor_b, zero);
+    switch (j->type) {
+    case PG_JOINT_DISTANCE:
+        put_jfix(o, "length", j->length, PG_FIX_ONE);
+        put_jflag(o, j, PG_JOINT_FLAG_SPRING, "enable_spring");
+        put_jfix(o, "hertz", j->hertz, 0);
+        put_jfix(o, "damping_ratio", j->damping, 0);
+        put_jflag(o, j, PG_JOINT_FLAG_LIMIT, "enable_limit");
+        put_jfix(o, "min_length", j->lower, 0);
+        put_jfix(o, "max_length", j->upper, JOINT_LENGTH_MAX);
+        break;
+    case PG_JOINT_REVOLUTE:
+        put_reference_angle(o, j->reference_angle);
+        put_jflag(o, j, PG_JOINT_FLAG_LIMIT, "enable_limit");
+        put_jfix(o, "lower_angle", j->lower, 0);
+        put_jfix(o, "upper_angle", j->upper, 0);
+        put_jflag(o, j, PG_JOINT_FLAG_MOTOR, "enable_motor");
+        put_jfix(o, "motor_speed", j->motor_speed, 0);
+        put_jfix(o, "max_motor_torque", j->max_motor, 0);
+        break;
+    case PG_JOINT_WELD:
+        put_reference_angle(o, j->reference_angle);
+        put_jfix(o, "linear_hertz", j->hertz, 0);
+        put_jfix(o, "linear_damping_ratio", j->damping, 0);
+        put_jfix(o, "angular_hertz", j->hertz2, 0);
+        put_jfix(o, "angular_damping_ratio", j->damping2, 0);
+        break;
+    case PG_JOINT_PRISMATIC:
+        put_jvec(o, "local_axis_a", j->axis, pg_v2(PG_FIX_ONE, 0));
+        put_reference_angle(o, j->reference_angle);
+        put_jflag(o, j, PG_JOINT_FLAG_LIMIT, "enable_limit");
+        put_jfix(o, "lower_translation", j->lower, 0);
+        put_jfix(o, "upper_translation", j->upper, 0);
+        put_jflag(o, j, PG_JOINT_FLAG_MOTOR, "enable_motor");
+        put_jfix(o, "motor_speed", j->motor_speed, 0);
+        put_jfix(o, "max_motor_force", j->max_motor, 0);
+        break;
+    default: {
+        pg_mouse_joint_def md = pg_default_mouse_joint_def();
+        put_char(o, ' ');
+        put_str(o, "target");
+        put_point(o, j->target);
+        put_jfix(o, "hertz", j->hertz, md.hertz);
+        put_jfix(o, "damping_ratio", j->damping, md.damping_ratio);
+        put_jfix(o, "max_force", j->max_motor, md.max_force);
+        break;
+    }
+    }
+    if (j->type != PG_JOINT_MOUSE) put_jflag(o, j, PG_JOINT_FLAG_COLLIDE, "collide_connected");
+    if (j->user_data != 0) put_str(o, " user_data "), put_u64(o, j->user_data);
+    put_char(o, '\n');
 }
 
 size_t pg_scene_write(const pg_world *world, char *buffer, size_t capacity)
@@ -1685,6 +2260,8 @@ size_t pg_scene_write(const pg_world *world, char *buffer, size_t capacity)
         write_settings(&o, &world->def);
         for (i = 0; i < world->body_high; ++i)
             if ((world->bodies[i].flags & PG_BODY_FLAG_USED) != 0) write_body(&o, world, &world->bodies[i]);
+        for (i = 0; i < world->joint_high && i < world->def.max_joints; ++i)
+            if ((world->joints[i].flags & PG_JOINT_FLAG_USED) != 0) write_joint(&o, world, &world->joints[i]);
     }
     finish_out(&o);
     return o.len;

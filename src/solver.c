@@ -10,11 +10,13 @@
  *   restitution              once after the substeps
  *   store                    impulses back into the world for the next step's warm start
  * then the bodies are written back and fast-turning ones swept (continuous.c).
- * Contacts are the one kind today (contact_solver.c); a joint kind is a file of its own
- * and one call per stage here. docs/solver-design.md gives the reasons. */
+ * The kinds: joints (joint_solver.c, one file per joint kind) and contacts
+ * (contact_solver.c), in that order in every stage. docs/solver-design.md gives the
+ * reasons. */
 #include "body.h"
 #include "contact_solver.h"
 #include "continuous.h"
+#include "joint_solver.h"
 #include "solver.h"
 #include "solver_kernel.h"
 
@@ -36,11 +38,14 @@ static size_t constraint_area_bytes(const pg_world_def *def)
     return ((cons > sweeps ? cons : sweeps) + 7u) & ~(size_t)7u;
 }
 
+/* The joints' constraints go last, after the deep push's list, aligned to 8. */
+#define joints_offset_pad 8u
+
 size_t pg__solver_scratch_bytes(const pg_world_def *def)
 {
     /* ... the active bodies, and the constraints of the pseudo pass (DEEP PUSH) */
     return constraints_offset(def->max_bodies) + constraint_area_bytes(def) + sizeof(uint32_t) * def->max_bodies +
-           sizeof(uint32_t) * def->max_contacts + 64u;
+           sizeof(uint32_t) * def->max_contacts + joints_offset_pad + pg__joint_scratch_bytes(def->max_joints, def->max_bodies) + 64u;
 }
 
 /* The gravity term g (a pg_fix) plus the force term f = round(F invm), which
@@ -78,7 +83,7 @@ static inline pg_angle angle_step(pg_fix w, int64_t angle_per_w)
  * Out of line: it runs once per substep, and keeps pg__solve small. */
 #define TIME_ONE (INT64_C(1) << 32)
 PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const uint32_t *active, uint32_t n_active,
-                                       const step_context *ctx, uint32_t sub, int rotation)
+                                       const step_context *ctx, uint32_t sub, int rotation, joint_change *joints)
 {
     int64_t t0 = ctx->h_q32 * (int64_t)sub, t1 = ctx->h_q32 * (int64_t)(sub + 1u); /* <= 2^32 / step_hz + 8 */
     int64_t whole = 0; /* 1 when t1 >= 2^32 (see TIME_ONE); t0 < 2^32 always */
@@ -98,6 +103,13 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
         sb->dv_x = (int32_t)((int64_t)sb->v.x - sb->v_pre.x);
         sb->dv_y = (int32_t)((int64_t)sb->v.y - sb->v_pre.y);
         sb->dw = (int64_t)sb->w - sb->w_pre;
+        if (joints != NULL) { /* the joints warm start their own rows: leave their change out */
+            joint_change *j = &joints[active[i]];
+            sb->dv_x = pg__sat64((int64_t)sb->dv_x - j->x);
+            sb->dv_y = pg__sat64((int64_t)sb->dv_y - j->y);
+            sb->dw -= j->w;
+            j->x = j->y = j->w = 0;
+        }
         if (sb->accel.x != 0 || sb->accel.y != 0) {
             int64_t vx, vy;
             if (sb->accel.x == g.x && sb->accel.y == g.y) { /* the same formula, computed once */
@@ -107,6 +119,9 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
                 vx = (int64_t)sb->v.x + whole * sb->accel.x + pg__round_shift64(sb->accel.x * t1, 32) - pg__round_shift64(sb->accel.x * t0, 32);
                 vy = (int64_t)sb->v.y + whole * sb->accel.y + pg__round_shift64(sb->accel.y * t1, 32) - pg__round_shift64(sb->accel.y * t0, 32);
             }
+            /* |v| <= 2^29 and the change within +-2^31 (|a| <= PG_FIX_MAX, t <= 1 s): out of
+             * Q16.16 only for an acceleration beyond the envelope, counted */
+            sb->saturated |= (uint32_t)(vx != pg__sat64(vx) || vy != pg__sat64(vy));
             sb->v = pg__clamp_speed(w, pg_v2(pg__sat64(vx), pg__sat64(vy)), &w->bodies[active[i]].flags);
         }
         if (sb->lin_damp != PG_ROT_ONE) {
@@ -114,8 +129,11 @@ PG__NOINLINE void integrate_velocities(pg_world *w, solver_body *bodies, const u
             sb->v.y = pg__mul_q30(sb->v.y, sb->lin_damp);
         }
         if (rotation) {
-            if (sb->alpha != 0)
-                sb->w = pg__sat64((int64_t)sb->w + whole * sb->alpha + pg__round_shift64(sb->alpha * t1, 32) - pg__round_shift64(sb->alpha * t0, 32));
+            if (sb->alpha != 0) {
+                int64_t spun = (int64_t)sb->w + whole * sb->alpha + pg__round_shift64(sb->alpha * t1, 32) - pg__round_shift64(sb->alpha * t0, 32);
+                sb->saturated |= (uint32_t)(spun != pg__sat64(spun)); /* as v above */
+                sb->w = pg__sat64(spun);
+            }
             if (sb->ang_damp != PG_ROT_ONE) sb->w = pg__mul_q30(sb->w, sb->ang_damp);
         }
         sb->v_pre = sb->v;
@@ -136,6 +154,9 @@ static void integrate_positions(solver_body *bodies, const uint32_t *active, uin
             vx += sb->pv.x;
             vy += sb->pv.y;
         }
+        /* saturating only for a body already out of the envelope: from |c| <= 1000 m, at
+         * most VELOCITY_MAX (8192 m/s, plus as much pseudo velocity) for at most 1 s
+         * reaches 17384 m < 32768 m within a step (envelope_exits counts the way out) */
         sb->c.x = pg__sat64((int64_t)sb->c.x + pg__round_shift64(vx * ctx->h_q32, 32));
         sb->c.y = pg__sat64((int64_t)sb->c.y + pg__round_shift64(vy * ctx->h_q32, 32));
         sb->dp = pg_v2((pg_fix)((int64_t)sb->c.x - sb->c0.x), (pg_fix)((int64_t)sb->c.y - sb->c0.y));
@@ -155,11 +176,14 @@ void pg__solve(pg_world *w)
     unsigned char *area = scratch + constraints_offset(w->def.max_bodies); /* the constraints */
     uint32_t *active = (uint32_t *)(void *)(area + constraint_area_bytes(&w->def));
     uint32_t *deep_list = active + w->def.max_bodies;
+    void *joint_area = (void *)(((uintptr_t)(deep_list + w->def.max_contacts) + 7u) & ~(uintptr_t)7u);
     pg_sweep *sweeps = (pg_sweep *)(void *)area; /* after the store stage (constraint_area_bytes) */
     uint32_t n_active = 0, n_fast = 0, i, sub;
     int sweeping;
     step_context ctx;
     pg_contact_stage contacts;
+    pg_joint_stage joints;
+    int have_joints;
     const uint32_t effects = w->def.effects;
     const int rotation = (effects & PG_EFFECT_ROTATION) != 0;
 
@@ -189,6 +213,7 @@ void pg__solve(pg_world *w)
         d->accel = pg_v2_zero(); /* read for the approach speed (APPROACH) */
         d->alpha = 0;
         d->pv = pg_v2_zero();
+        d->saturated = 0;
         d->pushed = 0;
         d->lin_damp = d->ang_damp = PG_ROT_ONE;
         d->v_pre = pg_v2_zero();
@@ -202,8 +227,11 @@ void pg__solve(pg_world *w)
         if (!pg__body_is_active(b)) continue;
         active[n_active++] = i;
         sb = &bodies[i];
-        sb->v = pg_v2(clamp_velocity(b->v.x), clamp_velocity(b->v.y)); /* the kernel's bounds */
+        /* the kernel's bounds: a body's velocities are within max_linear_speed (at most
+         * 4096 m/s) and +-1000 rad/s (the caps every write keeps), so these never clamp */
+        sb->v = pg_v2(clamp_velocity(b->v.x), clamp_velocity(b->v.y));
         sb->w = rotation ? clamp_velocity(b->w) : 0;
+        sb->saturated = 0;
         sb->c0 = sb->c = b->center;
         sb->dp = pg_v2_zero();
         sb->a0 = sb->a = b->angle;
@@ -232,6 +260,9 @@ void pg__solve(pg_world *w)
                 ay = add_force_term(ay, pg__mul64_shr(b->force_y, b->inv_mass, 38));
             }
             if (rotation && b->torque != 0) alpha = pg__mul64_shr(b->torque, b->inv_inertia, 38);
+            /* gravity is within +-1000 m/s^2; a force or torque beyond the envelope on a
+             * light body may leave Q16.16: counted */
+            sb->saturated = (uint32_t)(ax != pg__sat64(ax) || ay != pg__sat64(ay) || alpha != pg__sat64(alpha));
             sb->accel = pg_v2(pg__sat64(ax), pg__sat64(ay));
             sb->alpha = pg__sat64(alpha);
         }
@@ -244,16 +275,23 @@ void pg__solve(pg_world *w)
     }
 
     /* The stages: each constraint kind takes part in each through a call of its own. */
+    joints.count = 0;
+    if (w->joint_count > 0) pg__joints_prepare(&joints, &ctx, bodies, joint_area, active, n_active);
+    have_joints = joints.count > 0;
     pg__contacts_prepare(&contacts, &ctx, bodies, area, deep_list);
     for (sub = 0; sub < w->def.substeps; ++sub) {
         ctx.sub = sub;
-        integrate_velocities(w, bodies, active, n_active, &ctx, sub, rotation);
+        integrate_velocities(w, bodies, active, n_active, &ctx, sub, rotation, have_joints ? joints.change : NULL);
+        if (have_joints) pg__joints_warm_start(&joints, bodies);
         pg__contacts_warm_start(&contacts, &ctx, bodies, active, n_active);
+        if (have_joints) pg__joints_solve(&joints, &ctx, bodies);
         pg__contacts_solve(&contacts, &ctx, bodies);
         integrate_positions(bodies, active, n_active, &ctx, contacts.deep);
+        if (have_joints) pg__joints_relax(&joints, &ctx, bodies);
         pg__contacts_relax(&contacts, &ctx, bodies);
     }
     pg__contacts_restitution(&contacts, &ctx, bodies);
+    if (have_joints) pg__joints_store(&joints, w);
     pg__contacts_store(&contacts, w);
 
     /* write back, and the sweeps of bodies that turned too far for their speculative
@@ -264,6 +302,7 @@ void pg__solve(pg_world *w)
         const solver_body *sb = &bodies[active[i]];
         pg_fix w0 = b->w;
         int was_inside = pg__in_position_envelope(b->origin);
+        if (sb->saturated) pg__count_saturations(w, 1u);
         /* the contact solve may have left a velocity past the caps: clamp it (counted) */
         pg__body_store_velocity(w, b, sb->v, rotation ? sb->w : b->w); /* rotation off pauses spin */
         b->center = sb->c;

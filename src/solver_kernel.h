@@ -50,7 +50,15 @@ typedef struct solver_body {
                              START). Both ends of v are within the kernel's bounds (2^29),
                              so dv fits int32; w_pre, after an angular integration, within
                              +-2^31, so dw needs int64 */
+    uint32_t saturated;   /* nonzero when a velocity of this body was clamped to the
+                             kernel's bounds in this step: counted once in stats.saturations
+                             at the write-back */
 } solver_body;
+
+/* What the joints changed in a body's v and w since the substep's velocity integration,
+ * which dv leaves out (WARM START): one per solver body slot, in the joints' scratch (an
+ * array beside the solver bodies, so a solver body stays 128 bytes). */
+typedef struct joint_change { int64_t x, y, w; } joint_change;
 
 typedef struct softness {
     pg_fix bias_rate;
@@ -79,6 +87,29 @@ typedef struct step_context {
                                 step with a pseudo impulse (DEEP PUSH) */
     pg_vec2 gravity;         /* the acceleration gravity gives a body of gravity scale 1 */
 } step_context;
+
+/* Box2D v3's b2MakeSoft in fixed point: omega = 2 pi hz, a1 = 2 zeta + h omega,
+ * a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3,
+ * impulse scale a3. h = 1 / n_per_second. */
+static inline softness pg__make_soft(pg_fix hertz, pg_fix zeta, uint32_t n_per_second)
+{
+    softness s;
+    int64_t omega = row_round((int64_t)hertz * PG_FIX_TWO_PI, 16); /* Q16 */
+    int64_t h_omega = (omega * 2 + (int64_t)n_per_second) / (2 * (int64_t)n_per_second);
+    int64_t a1 = 2 * (int64_t)zeta + h_omega;
+    int64_t a2 = row_round(h_omega * a1, 16);
+    s.floor_depth = 0; /* the contacts set it from their push floor (pg__contacts_set_softness) */
+    s.bias_rate = a1 > 0 ? (pg_fix)((omega * 65536 + a1 / 2) / a1) : 0;
+    s.mass_scale = (int32_t)((a2 * (INT64_C(1) << 30) + (65536 + a2) / 2) / (65536 + a2));
+    s.impulse_scale = (int32_t)(((INT64_C(1) << 46) + (65536 + a2) / 2) / (65536 + a2));
+    {
+        /* a soft row at rest (rel = 0) keeps its lambda when mass_scale bias = -impulse_scale
+         * lambda; impulse_scale < 2^30, so the product fits */
+        int64_t hold = s.mass_scale > 0 ? ((int64_t)s.impulse_scale * (1 << 16) + s.mass_scale / 2) / s.mass_scale : INT32_MAX;
+        s.hold_rate = (int32_t)(hold > INT32_MAX ? INT32_MAX : hold);
+    }
+    return s;
+}
 
 /* ---- the row kernel ------------------------------------------------------------------
  * A constraint loads its two bodies' velocities into int64 locals, solves its rows
@@ -133,6 +164,8 @@ static inline void store_velocity(solver_body *b, const velocity *v)
     b->v.x = clamp_velocity(v->x);
     b->v.y = clamp_velocity(v->y);
     b->w = clamp_velocity(v->w);
+    /* v == VELOCITY_MAX takes this path too, unclamped */
+    b->saturated |= (uint32_t)(b->v.x != v->x || b->v.y != v->y || b->w != v->w);
 }
 
 /* The linear part of a row: what apply_row does when gA = gB = 0. */

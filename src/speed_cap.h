@@ -21,6 +21,13 @@ static inline pg_vec2 pg__clamp_speed(pg_world *world, pg_vec2 v, uint32_t *flag
     if ((uint64_t)((int64_t)v.x * v.x) + (uint64_t)((int64_t)v.y * v.y) <= (uint64_t)(cap * cap)) return v;
     return pg__clamp_speed_slow(world, v, flags);
 }
+/* stats.saturations += n, saturating: what the step clamped to its formats' range. A
+ * count, never state: it changes no result. */
+static inline void pg__count_saturations(pg_world *world, uint32_t n)
+{
+    uint32_t s = world->stats.saturations;
+    world->stats.saturations = n > UINT32_MAX - s ? UINT32_MAX : s + n;
+}
 /* Within the position envelope (+-PG_ENV_MAX_POSITION on both axes). */
 static inline int pg__in_position_envelope(pg_vec2 p)
 {

@@ -27,9 +27,9 @@
 #include "world_internal.h"
 
 #define SNAPSHOT_MAGIC 0x4E534750u /* "PGSN" */
-#define SNAPSHOT_VERSION 5u /* 2: inverse mass and inertia are derived, not stored; 3: a
+#define SNAPSHOT_VERSION 6u /* 2: inverse mass and inertia are derived, not stored; 3: a
                               contact point's push_impulse; 4: section hashes and a checksum;
-                              5: the engine version and the numeric configuration */
+                              5: the engine version and the numeric configuration; 6: joints */
 #define SNAPSHOT_HEADER_SIZE 28u /* magic, version, engine version, numeric configuration,
                                     three capacities */
 #define SNAPSHOT_OFF_ENGINE 6u   /* u16 major, minor, patch */
@@ -235,6 +235,51 @@ static void encode_broadphase(const pg_world *w, sink *s)
     }
 }
 
+/* A joint slot: its generation and whether it is used, then every field of its kind's
+ * state (one layout for all kinds, docs/snapshots.md). The bodies' joint lists are
+ * derived and not stored. */
+static void encode_joint(const pg_joint *j, sink *s)
+{
+    emit_u32(s, j->generation);
+    emit(s, (j->flags & PG_JOINT_FLAG_USED) != 0);
+    if ((j->flags & PG_JOINT_FLAG_USED) == 0) return;
+    emit(s, (uint32_t)j->type);
+    emit(s, j->flags & PG_JOINT_STATE_FLAGS);
+    emit_u32(s, j->body_a);
+    emit_u32(s, j->body_b);
+    emit_vec(s, j->anchor_a);
+    emit_vec(s, j->anchor_b);
+    emit_vec(s, j->axis);
+    emit_vec(s, j->target);
+    emit_u32(s, j->reference_angle);
+    emit_i32(s, j->length);
+    emit_i32(s, j->lower);
+    emit_i32(s, j->upper);
+    emit_i32(s, j->motor_speed);
+    emit_i32(s, j->max_motor);
+    emit_i32(s, j->hertz);
+    emit_i32(s, j->damping);
+    emit_i32(s, j->hertz2);
+    emit_i32(s, j->damping2);
+    emit_u64(s, j->user_data);
+    emit_i32(s, j->point_impulse[0]);
+    emit_i32(s, j->point_impulse[1]);
+    emit_i32(s, j->axial_impulse);
+    emit_i32(s, j->lower_impulse);
+    emit_i32(s, j->upper_impulse);
+    emit_i32(s, j->motor_impulse);
+}
+
+/* A world whose joint pool was never used encodes no byte here, so its hash is the one
+ * it had before joints existed. */
+static void encode_joints(const pg_world *w, sink *s)
+{
+    uint32_t i;
+    if (w->joint_high == 0) return;
+    emit_u32(s, w->joint_high);
+    for (i = 0; i < w->joint_high; ++i) encode_joint(&w->joints[i], s);
+}
+
 static void encode_section(const pg_world *w, pg_section section, sink *s)
 {
     uint32_t i;
@@ -253,7 +298,8 @@ static void encode_section(const pg_world *w, pg_section section, sink *s)
         for (i = 0; i < w->contact_count; ++i) encode_contact(&w->contacts[i], s);
         break;
     case PG_SECTION_BROADPHASE: encode_broadphase(w, s); break;
-    default: break; /* joints: none yet */
+    case PG_SECTION_JOINTS: encode_joints(w, s); break;
+    default: break;
     }
 }
 
@@ -554,6 +600,7 @@ static void decode_bodies(source *r, pg_world *w, const pg_world_def *caps, size
                     md.mass = b.mass;
                     md.inertia = b.inertia;
                     md.center = b.local_center;
+                    md.area = 0; /* not read: the struct is passed whole */
                     if (pg__mass_data_problem(md, (flags & PG_BODY_FLAG_FIXED_ROTATION) == 0) != NULL)
                         invalid(r, at, "body.mass or body.inertia (outside the envelope: its inverse leaves Q25.38)");
                 }
@@ -570,18 +617,18 @@ static void decode_bodies(source *r, pg_world *w, const pg_world_def *caps, size
             b.origin = pg_v2_sub(b.center, pg_rot_apply(b.rot, b.local_center));
         }
         if (r->body_info != NULL) {
-            r->body_info[5u * i] = used ? 1u + (uint32_t)b.type : 0u;
-            r->body_info[5u * i + 1u] = used ? b.first_shape : PG_NULL_INDEX;
-            r->body_info[5u * i + 2u] = b.shape_count;
-            r->body_info[5u * i + 3u] = used ? (uint32_t)pg__body_is_active(&b) : 0u;
-            r->body_info[5u * i + 4u] = used ? b.island : PG_NULL_INDEX;
+            r->body_info[(size_t)5u * i] = used ? 1u + (uint32_t)b.type : 0u;
+            r->body_info[(size_t)5u * i + 1u] = used ? b.first_shape : PG_NULL_INDEX;
+            r->body_info[(size_t)5u * i + 2u] = b.shape_count;
+            r->body_info[(size_t)5u * i + 3u] = used ? (uint32_t)pg__body_is_active(&b) : 0u;
+            r->body_info[(size_t)5u * i + 4u] = used ? b.island : PG_NULL_INDEX;
         }
         if (w != NULL) w->bodies[i] = b;
     }
     if (r->body_info != NULL) { /* islands name used bodies */
         for (i = 0; i < n && r->error_field == NULL; ++i) {
-            uint32_t island = r->body_info[5u * i + 4u];
-            if (r->body_info[5u * i] && island != PG_NULL_INDEX && (island >= n || !r->body_info[5u * island]))
+            uint32_t island = r->body_info[(size_t)5u * i + 4u];
+            if (r->body_info[(size_t)5u * i] && island != PG_NULL_INDEX && (island >= n || !r->body_info[(size_t)5u * island]))
                 invalid(r, start, "body.island (not a used body)");
         }
     }
@@ -643,8 +690,8 @@ static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size
             if (r->error_field == NULL && pg__validate_geometry(&sh.geometry) != PG_OK) invalid(r, at, "shape.geometry");
             /* a moving body's shapes reach less far than a static one's (validation pass:
              * the bodies, read before the shapes, are in body_info) */
-            if (r->error_field == NULL && r->body_info != NULL && sh.body < r->n_bodies && r->body_info[5u * sh.body] != 0u &&
-                pg__geometry_reach(&sh.geometry) > pg__body_reach_limit((pg_body_type)(r->body_info[5u * sh.body] - 1u)))
+            if (r->error_field == NULL && r->body_info != NULL && sh.body < r->n_bodies && r->body_info[(size_t)5u * sh.body] != 0u &&
+                pg__geometry_reach(&sh.geometry) > pg__body_reach_limit((pg_body_type)(r->body_info[(size_t)5u * sh.body] - 1u)))
                 invalid(r, at, "shape.geometry (reaches farther from its body's origin than the body's type allows)");
             if (r->error_field == NULL && r->body_info != NULL && sh.geometry.kind == PG_SHAPE_CHAIN_SEGMENT && sh.body < r->n_bodies &&
                 r->body_info[5u * sh.body] != 1u + (uint32_t)PG_BODY_STATIC)
@@ -669,9 +716,9 @@ static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size
          * by it and met once; every used shape is on its owner's list */
         uint32_t b;
         for (b = 0; b < r->n_bodies && r->error_field == NULL; ++b) {
-            uint32_t sidx = r->body_info[5u * b + 1u], k2;
-            if (!r->body_info[5u * b]) continue;
-            for (k2 = 0; k2 < r->body_info[5u * b + 2u]; ++k2) {
+            uint32_t sidx = r->body_info[(size_t)5u * b + 1u], k2;
+            if (!r->body_info[(size_t)5u * b]) continue;
+            for (k2 = 0; k2 < r->body_info[(size_t)5u * b + 2u]; ++k2) {
                 if (sidx >= n || r->shape_owner[sidx] != b || r->shape_mark[sidx]) { invalid(r, start, "shape lists (body.first_shape, shape.next, shape.body)"); break; }
                 r->shape_mark[sidx] = 1;
                 sidx = r->shape_next[sidx];
@@ -679,7 +726,7 @@ static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size
             if (r->error_field == NULL && sidx != PG_NULL_INDEX) invalid(r, start, "shape lists (body.shape_count)");
         }
         for (i = 0; i < n && r->error_field == NULL; ++i) /* owners are used bodies */
-            if (r->shape_owner[i] != PG_NULL_INDEX && (r->shape_owner[i] >= r->n_bodies || !r->body_info[5u * r->shape_owner[i]]))
+            if (r->shape_owner[i] != PG_NULL_INDEX && (r->shape_owner[i] >= r->n_bodies || !r->body_info[(size_t)5u * r->shape_owner[i]]))
                 invalid(r, start, "shape.body (not a used body)");
         for (i = 0; i < n && r->error_field == NULL; ++i)
             if (r->shape_owner[i] != PG_NULL_INDEX && !r->shape_mark[i]) invalid(r, start, "shape lists (a shape is on no list)");
@@ -790,9 +837,113 @@ static void decode_broadphase(source *r, pg_world *w, const pg_world_def *caps, 
         at = r->pos;
         if (take_u32(r, "broadphase.shape") != i) invalid(r, at, "broadphase.shape");
         at = r->pos;
-        if (take(r, "broadphase.active") != r->body_info[5u * owner + 3u]) invalid(r, at, "broadphase.active");
+        if (take(r, "broadphase.active") != r->body_info[(size_t)5u * owner + 3u]) invalid(r, at, "broadphase.active");
     }
     if (r->shape_owner == NULL) r->pos = r->error_field == NULL ? start + length : r->pos;
+}
+
+static int joint_param_ok(int32_t v, int32_t lo, int32_t hi) { return v >= lo && v <= hi; }
+
+static void decode_joints(source *r, pg_world *w, const pg_world_def *caps, size_t start, size_t length)
+{
+    uint32_t i, n = 0;
+    size_t at;
+    (void)start;
+    if (length > 0) {
+        at = r->pos;
+        n = take_u32(r, "joints.count");
+        if (n == 0 || n > caps->max_joints) invalid(r, at, "joints.count (0, or beyond the world's max_joints)");
+    }
+    for (i = 0; i < n && r->error_field == NULL; ++i) {
+        pg_joint j;
+        uint32_t used, flags;
+        unsigned char *p = (unsigned char *)&j;
+        size_t z;
+        for (z = 0; z < sizeof j; ++z) p[z] = 0;
+        j.generation = take_u32(r, "joint.generation");
+        at = r->pos;
+        used = take(r, "joint.used");
+        if (used > 1u) invalid(r, at, "joint.used");
+        if (used) {
+            int mouse;
+            at = r->pos;
+            j.type = (pg_joint_type)take(r, "joint.type");
+            if ((unsigned)j.type >= (unsigned)PG_JOINT_TYPE_COUNT) invalid(r, at, "joint.type");
+            mouse = j.type == PG_JOINT_MOUSE;
+            at = r->pos;
+            flags = take(r, "joint.flags");
+            if ((flags & ~(uint32_t)PG_JOINT_STATE_FLAGS) != 0) invalid(r, at, "joint.flags");
+            j.flags = flags | PG_JOINT_FLAG_USED;
+            at = r->pos;
+            j.body_a = take_u32(r, "joint.body_a");
+            j.body_b = take_u32(r, "joint.body_b");
+            if (r->error_field == NULL && r->body_info != NULL) {
+                /* used bodies, two different ones (a mouse joint has no body A). Both may be
+                 * static: pg_body_set_type can make them so after the joint was made, and
+                 * such a joint acts on nothing */
+                int a_ok = mouse ? j.body_a == PG_NULL_INDEX : j.body_a < r->n_bodies && r->body_info[5u * j.body_a] != 0;
+                int b_ok = j.body_b < r->n_bodies && r->body_info[5u * j.body_b] != 0;
+                if (!a_ok || !b_ok || j.body_a == j.body_b) invalid(r, at, "joint.bodies (not two used bodies)");
+            }
+            j.anchor_a = take_vec(r, "joint.anchor_a");
+            j.anchor_b = take_vec(r, "joint.anchor_b");
+            at = r->pos;
+            j.axis = take_vec(r, "joint.axis");
+            if (j.type == PG_JOINT_PRISMATIC && r->error_field == NULL) {
+                int64_t q = (int64_t)j.axis.x * j.axis.x + (int64_t)j.axis.y * j.axis.y - (INT64_C(1) << 32);
+                if (!within64(q, INT64_C(1) << 20)) invalid(r, at, "joint.axis (not a unit vector)");
+            }
+            j.target = take_vec(r, "joint.target");
+            j.reference_angle = take_u32(r, "joint.reference_angle");
+            at = r->pos;
+            j.length = take_i32(r, "joint.length");
+            if (!joint_param_ok(j.length, 0, PG_FIX_C(100))) invalid(r, at, "joint.length (outside 0..100 m)");
+            at = r->pos;
+            j.lower = take_i32(r, "joint.lower");
+            j.upper = take_i32(r, "joint.upper");
+            if (!within(j.lower, PG_FIX_C(100)) || !within(j.upper, PG_FIX_C(100)) || j.lower > j.upper) invalid(r, at, "joint.lower/upper");
+            at = r->pos;
+            j.motor_speed = take_i32(r, "joint.motor_speed");
+            if (!within(j.motor_speed, PG_FIX_C(1000))) invalid(r, at, "joint.motor_speed (beyond +-1000)");
+            at = r->pos;
+            j.max_motor = take_i32(r, "joint.max_motor");
+            if (j.max_motor < 0) invalid(r, at, "joint.max_motor (negative)");
+            at = r->pos;
+            j.hertz = take_i32(r, "joint.hertz");
+            j.damping = take_i32(r, "joint.damping");
+            j.hertz2 = take_i32(r, "joint.hertz2");
+            j.damping2 = take_i32(r, "joint.damping2");
+            if (!joint_param_ok(j.hertz, 0, PG_FIX_C(1000)) || !joint_param_ok(j.damping, 0, PG_FIX_C(1000)) ||
+                !joint_param_ok(j.hertz2, 0, PG_FIX_C(1000)) || !joint_param_ok(j.damping2, 0, PG_FIX_C(1000)))
+                invalid(r, at, "joint softness (outside 0..1000)");
+            j.user_data = take_u64(r, "joint.user_data");
+            at = r->pos;
+            j.point_impulse[0] = take_i32(r, "joint.impulse");
+            j.point_impulse[1] = take_i32(r, "joint.impulse");
+            j.axial_impulse = take_i32(r, "joint.impulse");
+            j.lower_impulse = take_i32(r, "joint.impulse");
+            j.upper_impulse = take_i32(r, "joint.impulse");
+            j.motor_impulse = take_i32(r, "joint.impulse");
+            if (!within(j.point_impulse[0], LIMIT_LAMBDA) || !within(j.point_impulse[1], LIMIT_LAMBDA) || !within(j.axial_impulse, LIMIT_LAMBDA) ||
+                j.lower_impulse < 0 || j.lower_impulse > LIMIT_LAMBDA || j.upper_impulse < 0 || j.upper_impulse > LIMIT_LAMBDA ||
+                !within(j.motor_impulse, LIMIT_LAMBDA))
+                invalid(r, at, "joint impulses (beyond the solver's 2^29)");
+        }
+        j.next_a = j.next_b = PG_NULL_INDEX;
+        if (w != NULL) w->joints[i] = j;
+    }
+    if (w != NULL) {
+        uint32_t count = 0;
+        for (i = n; i < w->joint_high; ++i) { /* slots past the snapshot's: never used */
+            pg_joint zero = {0};
+            zero.next_a = zero.next_b = PG_NULL_INDEX;
+            w->joints[i] = zero;
+        }
+        w->joint_high = n;
+        for (i = 0; i < n; ++i) count += (w->joints[i].flags & PG_JOINT_FLAG_USED) != 0;
+        w->joint_count = count;
+        pg__joint_rebuild_lists(w);
+    }
 }
 
 /* Parse (and with `w` non-NULL, apply) one snapshot whose checksums have been checked
@@ -800,7 +951,7 @@ static void decode_broadphase(source *r, pg_world *w, const pg_world_def *caps, 
 static void decode(source *r, pg_world *w, const pg_world_def *caps)
 {
     static void (*const decoders[PG_SECTION_COUNT])(source *, pg_world *, const pg_world_def *, size_t, size_t) = {
-        decode_settings, decode_bodies, decode_shapes, decode_contacts, decode_broadphase, NULL};
+        decode_settings, decode_bodies, decode_shapes, decode_contacts, decode_broadphase, decode_joints};
     int k;
     size_t at;
     if (take_u32(r, "magic") != SNAPSHOT_MAGIC) invalid(r, 0, "magic");
@@ -824,8 +975,7 @@ static void decode(source *r, pg_world *w, const pg_world_def *caps)
         start = r->pos;
         if (r->error_field == NULL && length > r->size - r->pos) invalid(r, start - 4u, "section length");
         if (r->error_field != NULL) break;
-        if (decoders[k] != NULL) decoders[k](r, w, caps, start, length);
-        else r->pos = start + length; /* joints: empty */
+        decoders[k](r, w, caps, start, length);
         if (r->error_field == NULL && r->pos != start + length) invalid(r, start - 4u, "section length");
         take_u64(r, "section hash"); /* checked with the checksum, before decoding */
     }

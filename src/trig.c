@@ -60,6 +60,7 @@ pg_angle pg_angle_atan2(pg_fix y, pg_fix x)
         if (uy > 0) {
             t = ux + (uy >> i); uy -= ux >> i; ux = t; z += pg_cordic_atan_table[i];
         } else if (uy < 0) {
+            /* cppcheck-suppress shiftNegativeLHS ; a right shift (implementation-defined, not undefined), pinned to arithmetic by fixed.h's check */
             t = ux - (uy >> i); uy += ux >> i; ux = t; z -= pg_cordic_atan_table[i];
         } else {
             break;

@@ -27,6 +27,7 @@ pg_world_def pg_default_world_def(void)
     d.max_bodies = 1024;
     d.max_shapes = 2048;
     d.max_contacts = 4096;
+    d.max_joints = 64;
     d.pg__cookie = PG__DEF_COOKIE;
     return d;
 }
@@ -43,6 +44,7 @@ static const char *check_def(const pg_world_def *d)
     if (d->max_bodies < 1 || d->max_bodies > PG_MAX_CAPACITY) return "max_bodies must be 1..2^24";
     if (d->max_shapes < 1 || d->max_shapes > PG_MAX_CAPACITY) return "max_shapes must be 1..2^24";
     if (d->max_contacts < 1 || d->max_contacts > PG_MAX_CAPACITY) return "max_contacts must be 1..2^24";
+    if (d->max_joints > PG_MAX_CAPACITY) return "max_joints must be 0..2^24";
     if (d->contact_hertz <= 0 || d->contact_hertz > PG_FIX_C(1000)) return "contact_hertz must be in (0, 1000]";
     if (d->contact_damping_ratio < 0 || d->contact_damping_ratio > PG_FIX_C(1000)) return "contact_damping_ratio must be 0..1000";
     if (d->contact_push_max <= 0 || d->contact_push_max > PG_FIX_C(1000)) return "contact_push_max must be in (0, 1000] m/s";
@@ -55,7 +57,7 @@ static const char *check_def(const pg_world_def *d)
 }
 
 typedef struct layout {
-    size_t world, bodies, shapes, contacts, contacts_next, geoms, boxes, flags, pboxes, pflags, pshape, pairs, bp, solver, island, begin, end, total;
+    size_t world, bodies, shapes, joints, contacts, contacts_next, geoms, boxes, flags, pboxes, pflags, pshape, pairs, bp, solver, island, begin, end, total;
 } layout;
 
 static size_t align8(size_t n) { return (n + 7u) & ~(size_t)7u; }
@@ -69,6 +71,7 @@ static layout compute_layout(const pg_world_def *d)
     PLACE(world, sizeof(pg_world));
     PLACE(bodies, sizeof(pg_body) * d->max_bodies);
     PLACE(shapes, sizeof(pg_shape) * d->max_shapes);
+    PLACE(joints, sizeof(pg_joint) * d->max_joints);
     PLACE(contacts, sizeof(pg_contact) * d->max_contacts);
     PLACE(contacts_next, sizeof(pg_contact) * d->max_contacts);
     PLACE(geoms, sizeof(pg_geom) * d->max_shapes);
@@ -118,6 +121,7 @@ pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_s
     w->def = *def;
     w->bodies = (pg_body *)(void *)(m + l.bodies);
     w->shapes = (pg_shape *)(void *)(m + l.shapes);
+    w->joints = (pg_joint *)(void *)(m + l.joints);
     w->contacts = (pg_contact *)(void *)(m + l.contacts);
     w->contacts_next = (pg_contact *)(void *)(m + l.contacts_next);
     w->world_geoms = (pg_geom *)(void *)(m + l.geoms);
@@ -181,7 +185,7 @@ pg_world_stats pg_world_get_stats(const pg_world *world)
     pg_world_stats s;
     uint32_t i;
     if (world == NULL) {
-        pg_world_stats zero = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+        pg_world_stats zero = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
         return zero;
     }
     s = world->stats;
@@ -205,6 +209,7 @@ pg_result pg_world_step(pg_world *world)
     if (world == NULL) return PG_ERR_NULL;
     world->begin_count = 0;
     world->end_count = 0;
+    if (world->joint_count > 0) pg__wake_joined_bodies(world);
     /* 1. geometry of moving bodies (static and sleeping ones keep theirs) */
     for (i = 0; i < world->body_high; ++i) {
         pg_body *b = &world->bodies[i];

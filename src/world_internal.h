@@ -15,6 +15,8 @@
 #include "events.h"
 #include "geom.h"
 #include "island.h"
+#include "joint_def.h"
+#include "joint_pool.h"
 #include "mass.h"
 #include "raycast.h"
 #include "reach.h"

@@ -1,7 +1,8 @@
 /* world_types.h (internal) — the world as it sits in the caller's memory.
  *
  * State that influences the future (and therefore goes into hashes and snapshots):
- * the body and shape pools (slots in use, generations), every body's motion state and
+ * the body, shape and joint pools (slots in use, generations), the joints' parameters
+ * and accumulated impulses, every body's motion state and
  * sleep timer, the contact list (sorted by shape pair) with its manifolds and
  * accumulated impulses, world settings and the frame counter. Everything else here is
  * scratch recomputed each step. Every stage of the step includes this; none includes
@@ -14,6 +15,7 @@
 #include "broadphase.h"
 #include "contact_types.h"
 #include "geom.h"
+#include "joint_types.h"
 #include "shape_types.h"
 
 struct pg_world {
@@ -27,6 +29,9 @@ struct pg_world {
                                   the generations of freed slots are state) */
     uint32_t shape_high;
     uint32_t body_count, shape_count;
+    pg_joint *joints;
+    uint32_t joint_high;       /* one past the highest joint slot ever used */
+    uint32_t joint_count;
     pg_world_stats stats;
 
     /* scratch, recomputed each step */

@@ -171,6 +171,7 @@ typedef struct pg_world_def {
     uint32_t max_bodies;        /**< most bodies at once, default 1024 */
     uint32_t max_shapes;        /**< most shapes at once, default 2048 */
     uint32_t max_contacts;      /**< most contacts at once, default 4096 */
+    uint32_t max_joints;        /**< most joints at once (pogon/joint.h), default 64 (0 .. 2^24) */
     uint32_t pg__cookie;        /**< internal: set by pg_default_world_def(), which every def
                                    must start from; a def without it is refused */
 } pg_world_def;
@@ -224,6 +225,15 @@ typedef struct pg_world_stats {
     uint32_t envelope_exits;   /**< times a step carried a body's origin out of +-1000 m, all
                                     time (beyond it precision falls and at +-32768 m positions
                                     stop: see pg_body_limits) */
+    uint32_t saturations;      /**< values a step clamped to the range of its formats, all
+                                    time (saturates): a body's velocity in the contact solver
+                                    beyond +-8192 m/s or rad/s (once per body and step), a
+                                    contact point's impulse held at the solver's bound of
+                                    8192 m/s (once per point and step), an acceleration or
+                                    angular acceleration from forces beyond +-32768 (once per
+                                    body and step). Results stay defined; a nonzero count says
+                                    the scene left what the formats hold (mass ratios far
+                                    past 1:1000, forces far past the envelope) */
 } pg_world_stats;
 /** The world's counts now. */
 pg_world_stats pg_world_get_stats(const pg_world *world);
@@ -502,4 +512,6 @@ const pg_contact_event *pg_world_end_events(const pg_world *world, uint32_t *cou
 #ifdef __cplusplus
 }
 #endif
+
+#include "pogon/joint.h"
 #endif

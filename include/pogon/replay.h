@@ -27,6 +27,7 @@
 #ifndef POGON_REPLAY_H
 #define POGON_REPLAY_H
 
+#include "pogon/joint.h"
 #include "pogon/pogon.h"
 
 #ifdef __cplusplus
@@ -60,6 +61,16 @@ typedef enum pg_command_kind {
     PG_CMD_SET_FIXED_ROTATION = 21,/**< body, value */
     PG_CMD_SET_FILTER = 22,        /**< body, value (category), value2 (mask) */
     PG_CMD_SET_USER_DATA = 23,     /**< body, user_data */
+    PG_CMD_CREATE_DISTANCE_JOINT = 24, /**< joint_def.distance -> a new joint (pg_command_apply_made) */
+    PG_CMD_CREATE_REVOLUTE_JOINT = 25, /**< joint_def.revolute */
+    PG_CMD_CREATE_WELD_JOINT = 26,     /**< joint_def.weld */
+    PG_CMD_CREATE_PRISMATIC_JOINT = 27,/**< joint_def.prismatic */
+    PG_CMD_CREATE_MOUSE_JOINT = 28,    /**< joint_def.mouse: what a drag starts with */
+    PG_CMD_DESTROY_JOINT = 29,     /**< joint */
+    PG_CMD_SET_JOINT_MOTOR = 30,   /**< joint (revolute or prismatic), flag (enable), scalar (speed), scalar2 (max torque or force) */
+    PG_CMD_SET_JOINT_LIMITS = 31,  /**< joint (distance, revolute or prismatic), flag (enable), scalar (lower), scalar2 (upper) */
+    PG_CMD_SET_MOUSE_TARGET = 32,  /**< joint (mouse), vec (the target): what a drag moves */
+    PG_CMD_SET_MOUSE_MAX_FORCE = 33,/**< joint (mouse), scalar (N) */
     PG_CMD_KIND_COUNT              /**< the number of kinds (not a kind) */
 } pg_command_kind;
 
@@ -74,8 +85,18 @@ typedef enum pg_make_kind {
     PG_MAKE_KIND_COUNT    /**< the number of kinds (not a kind) */
 } pg_make_kind;
 
+/** The def a CREATE_*_JOINT command carries: the member its kind names. */
+typedef union pg_command_joint_def {
+    pg_distance_joint_def distance;   /**< CREATE_DISTANCE_JOINT */
+    pg_revolute_joint_def revolute;   /**< CREATE_REVOLUTE_JOINT */
+    pg_weld_joint_def weld;           /**< CREATE_WELD_JOINT */
+    pg_prismatic_joint_def prismatic; /**< CREATE_PRISMATIC_JOINT */
+    pg_mouse_joint_def mouse;         /**< CREATE_MOUSE_JOINT */
+} pg_command_joint_def;
+
 /** One command. Only the fields its kind names are read; the rest must be as
- * pg_command_init leaves them, so a command has one byte image. */
+ * pg_command_init leaves them, so a command has one byte image (set a joint def's
+ * fields one by one: assigning a whole def may copy padding bytes). */
 typedef struct pg_command {
     pg_command_kind kind;   /**< what the command does */
     pg_body_id body;        /**< the body it acts on */
@@ -86,7 +107,7 @@ typedef struct pg_command {
     pg_angle angle;         /**< SET_TRANSFORM: the angle */
     uint32_t value;         /**< a body type, awake flag, effects bits or filter category */
     uint32_t value2;        /**< SET_FILTER: the mask */
-    uint32_t flag;          /**< APPLY_FORCE: 1 = at `point` */
+    uint32_t flag;          /**< APPLY_FORCE: 1 = at `point`; SET_JOINT_MOTOR, SET_JOINT_LIMITS: enable */
     uint64_t user_data;     /**< SET_USER_DATA: the value */
     pg_make_kind make_kind; /**< MAKE: which kind */
     pg_fix size0;           /**< MAKE: the first size (see pg_make_kind) */
@@ -94,16 +115,22 @@ typedef struct pg_command {
     pg_body_def body_def;   /**< CREATE_BODY, MAKE: the body */
     pg_shape_def shape_def; /**< ADD_SHAPE, MAKE: the material and filter */
     pg_geometry geometry;   /**< ADD_SHAPE: the geometry */
+    pg_joint_id joint;      /**< the joint a joint command acts on */
+    pg_command_joint_def joint_def; /**< CREATE_*_JOINT: the def */
 } pg_command;
 
 /** A command of the given kind: zeroed, but for body_def and shape_def, which hold
- * pg_default_body_def() and pg_default_shape_def(). */
+ * pg_default_body_def() and pg_default_shape_def(), and a CREATE_*_JOINT command's
+ * joint_def member, which holds its kind's defaults. */
 pg_command pg_command_init(pg_command_kind kind);
 /** Stable lower-case names ("set_linear_velocity") for files and messages. */
 const char *pg_command_kind_name(pg_command_kind kind);
 /** Apply one command now. `created` (may be NULL) receives the new body of CREATE_BODY
  * and MAKE. Returns the result of the call the command stands for. */
 pg_result pg_command_apply(pg_world *world, const pg_command *command, pg_body_id *created);
+/** pg_command_apply, and `created_joint` (may be NULL) receives the new joint of a
+ * CREATE_*_JOINT command (the zero handle otherwise). */
+pg_result pg_command_apply_made(pg_world *world, const pg_command *command, pg_body_id *created, pg_joint_id *created_joint);
 
 /** Binary form of a command, little-endian fixed-width fields (docs/formats.md):
  * u8 kind, then the fields that kind uses in the order of docs/formats.md (the order of the

@@ -43,7 +43,7 @@ extern "C" {
 #endif
 
 #define PG_REPLAY_MAGIC "PGREPLAY"          /**< 8 bytes, no terminator in the file */
-#define PG_REPLAY_FORMAT_VERSION 2u         /**< the format version this build writes and reads
+#define PG_REPLAY_FORMAT_VERSION 3u         /**< the format version this build writes and reads
                                                  (pg_replay_upgrade converts older ones) */
 #define PG_REPLAY_HEADER_SIZE 44u           /**< fixed header, hash included */
 #define PG_REPLAY_TRAILER_SIZE 29u          /**< the end record: tag, frames, final hash, block hash, checksum */
@@ -116,7 +116,8 @@ pg_result pg_replay_checkpoint(const uint8_t *data, const pg_replay_info *info, 
  * is copied as it is. `out` must not overlap `data`. PG_ERR_MEMORY when `capacity` is
  * short: *out_size (may be NULL) then holds the size needed. PG_ERR_INVALID_ARGUMENT
  * and *error for a damaged file; PG_ERR_INCOMPATIBLE for a version this build does not
- * know. Format 1 had no numeric configuration; format 2 adds it after the flags. */
+ * know. Format 1 had no numeric configuration; format 2 adds it after the flags;
+ * format 3 adds the joint commands (its header is format 2's). */
 pg_result pg_replay_upgrade(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
                             size_t *out_size, pg_replay_error *error);
 

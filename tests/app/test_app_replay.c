@@ -246,7 +246,7 @@ static void test_bad_arguments(void **state)
 /* The picker's scenes load with the core's reader and step. */
 static void test_scene_files_load(void **state)
 {
-    static const char *const names[] = {"demo", "pile", "dominoes", "pyramid", "stack", "shapes"};
+    static const char *const names[] = {"demo", "pile", "dominoes", "pyramid", "stack", "shapes", "pendulum", "double_pendulum", "newtons_cradle", "chain40", "bridge", "car", "ragdoll", "soft_blob_bowl"};
     size_t i;
     (void)state;
     for (i = 0; i < sizeof names / sizeof names[0]; ++i) {

@@ -5,7 +5,8 @@
  * (stats.speed_clamps, spin_clamps) and flagged (pg_body_limits), every getter's value
  * is accepted by its setter, and a scene written mid-flight loads. A body carried past
  * +-1000 m is counted (stats.envelope_exits) and flagged. Dropped contacts are counted
- * one by one (stats.capacity_misses). */
+ * one by one (stats.capacity_misses), and so are the values a step clamps to the range of
+ * its formats (stats.saturations). */
 #include "pg_test.h"
 #include "pg_test_world.h"
 
@@ -251,6 +252,76 @@ static void test_capacity_misses_counts_each_dropped_contact(void **state)
     free_world(&t);
 }
 
+/* A force far beyond the envelope on a light ball (32767 N on 7.9e-4 kg) gives an
+ * acceleration past Q16.16: one saturation for that body in that step, none once the
+ * force is spent, and none in an ordinary step. */
+static void test_force_past_the_format_is_counted(void **state)
+{
+    pg_world_def d = pg_default_world_def();
+    test_world t;
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_def bd = dynamic_at(0, 0);
+    pg_body_id b;
+    (void)state;
+    d.gravity = pg_v2_zero();
+    t = make_world_def(&d);
+    sd.density = fx(0.1);
+    assert_int_equal(pg_make_ball(t.w, &bd, &sd, fx(0.05), &b), PG_OK);
+    assert_int_equal(pg_world_step(t.w), PG_OK);
+    assert_int_equal(pg_world_get_stats(t.w).saturations, 0);
+    assert_int_equal(pg_body_apply_force(t.w, b, pg_v2(PG_FIX_C(1), 0)), PG_OK); /* 1270 m/s^2: fits */
+    assert_int_equal(pg_world_step(t.w), PG_OK);
+    assert_int_equal(pg_world_get_stats(t.w).saturations, 0);
+    assert_int_equal(pg_body_apply_force(t.w, b, pg_v2(PG_FIX_MAX, 0)), PG_OK);
+    assert_int_equal(pg_world_step(t.w), PG_OK);
+    assert_int_equal(pg_world_get_stats(t.w).saturations, 1);
+    assert_true(pg_world_get_stats(t.w).speed_clamps > 0); /* and the speed cap then holds it */
+    assert_int_equal(pg_world_step(t.w), PG_OK);
+    assert_int_equal(pg_world_get_stats(t.w).saturations, 1);
+    free_world(&t);
+}
+
+/* A heavy box and a light ball meet head-on, bouncing (restitution 1), no gravity. At the
+ * largest max_linear_speed (4096 m/s each way) the bounce wants a change of relative
+ * velocity of 16384 m/s, twice the solver's bound on a contact impulse (8192 m/s): the
+ * impulse is held there, and counted. At the default 400 m/s nothing is. */
+static void test_impulse_at_the_solver_bound_is_counted(void **state)
+{
+    int fast;
+    (void)state;
+    for (fast = 0; fast < 2; ++fast) {
+        pg_world_def d = pg_default_world_def();
+        test_world t;
+        pg_shape_def heavy = pg_default_shape_def(), light = pg_default_shape_def();
+        pg_fix speed = fast ? PG_FIX_C(4096) : PG_FIX_C(400);
+        pg_body_def bd;
+        pg_body_id box, ball;
+        int i;
+        d.gravity = pg_v2_zero();
+        d.max_linear_speed = PG_FIX_C(4096);
+        d.max_bodies = 8;
+        d.max_shapes = 8;
+        d.max_contacts = 32;
+        t = make_world_def(&d);
+        heavy.density = PG_FIX_C(100);
+        light.density = fx(0.1);
+        heavy.restitution = light.restitution = PG_FIX_ONE;
+        bd = dynamic_at(-200, 0);
+        bd.linear_velocity = pg_v2(speed, 0);
+        assert_int_equal(pg_make_box(t.w, &bd, &heavy, PG_FIX_C(10), PG_FIX_C(10), &box), PG_OK);
+        bd = dynamic_at(200, 0);
+        bd.linear_velocity = pg_v2(-speed, 0);
+        assert_int_equal(pg_make_ball(t.w, &bd, &light, PG_FIX_HALF, &ball), PG_OK);
+        for (i = 0; i < 60; ++i) assert_int_equal(pg_world_step(t.w), PG_OK);
+        /* they met: the ball flies away ahead of the box */
+        assert_true(pg_body_linear_velocity(t.w, ball).x > 0);
+        print_message("head-on at %d m/s: %u saturations\n", fast ? 4096 : 400, (unsigned)pg_world_get_stats(t.w).saturations);
+        if (fast) assert_true(pg_world_get_stats(t.w).saturations > 0);
+        else assert_int_equal(pg_world_get_stats(t.w).saturations, 0);
+        free_world(&t);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -260,6 +331,8 @@ int main(void)
         cmocka_unit_test(test_angular_impulse_clamp_is_reported),
         cmocka_unit_test(test_leaving_the_envelope_is_reported),
         cmocka_unit_test(test_capacity_misses_counts_each_dropped_contact),
+        cmocka_unit_test(test_force_past_the_format_is_counted),
+        cmocka_unit_test(test_impulse_at_the_solver_bound_is_counted),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -140,7 +140,7 @@ static void test_write_read_play(void **state)
     assert_int_equal(size, size2);
     assert_memory_equal(file, file2, size);
     assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
-    assert_int_equal(info.format_version, 2);
+    assert_int_equal(info.format_version, PG_REPLAY_FORMAT_VERSION);
     assert_int_equal(info.engine_major, POGON_VERSION_MAJOR);
     assert_int_equal(info.numeric_config, pg_numeric_config());
     assert_int_equal(info.numeric_config & PG_NUMCFG_TRIG_BITS_MASK, PG_TRIG_TABLE_BITS);
@@ -210,6 +210,41 @@ static void test_compare_checkpoint(void **state)
     assert_int_equal(pg_replay_compare_checkpoint(p.world, file, &info, info.checkpoint_count, NULL, NULL, NULL), 0);
     assert_int_equal(pg_replay_compare_checkpoint(NULL, file, &info, 0, NULL, NULL, NULL), 0);
     assert_int_equal(pg_replay_compare_checkpoint(p.world, NULL, &info, 0, NULL, NULL, NULL), 0);
+    free(memory);
+    free(file);
+}
+
+/* pg_replay_checkpoint reads back what the writer stored: at checkpoint k (frame 10 k)
+ * the world's hash and section hashes as the player sees them at that frame; an index
+ * past the last and NULLs are refused. */
+static void test_checkpoint_read(void **state)
+{
+    size_t size, mem;
+    uint64_t final_hash, hash = 0, sections[PG_SECTION_COUNT], expected[PG_SECTION_COUNT];
+    uint8_t *file = record(40, 10, 1 << 16, &size, &final_hash);
+    pg_replay_info info;
+    pg_replay_error err;
+    pg_replay_player p;
+    pg_replay_frame_result fr;
+    void *memory;
+    uint32_t k;
+    int s;
+    (void)state;
+    assert_int_equal(pg_replay_read(file, size, &info, &err), PG_OK);
+    assert_int_equal(pg_replay_world_memory_size(&info, &mem, &err), PG_OK);
+    memory = malloc(mem);
+    assert_int_equal(pg_replay_player_begin(&p, file, &info, memory, mem, &fr, &err), PG_OK);
+    assert_true(info.checkpoint_count >= 4);
+    for (k = 0; k < info.checkpoint_count; ++k) {
+        while (p.frame < 10u * k) assert_int_equal(pg_replay_player_step(&p, &fr), PG_OK);
+        assert_int_equal(pg_replay_checkpoint(file, &info, k, &hash, sections), PG_OK);
+        PG_EXPECT_EQ(hash == pg_world_hash(p.world), 1, "checkpoint %u: the world's hash at frame %u", (unsigned)k, (unsigned)(10u * k));
+        pg_world_section_hashes(p.world, expected);
+        for (s = 0; s < PG_SECTION_COUNT; ++s) PG_EXPECT_EQ(sections[s] == expected[s], 1, "checkpoint %u section %d", (unsigned)k, s);
+    }
+    assert_int_equal(pg_replay_checkpoint(file, &info, info.checkpoint_count, &hash, sections), PG_ERR_INVALID_ARGUMENT);
+    assert_int_equal(pg_replay_checkpoint(NULL, &info, 0, &hash, sections), PG_ERR_NULL);
+    assert_int_equal(pg_replay_checkpoint(file, NULL, 0, &hash, sections), PG_ERR_NULL);
     free(memory);
     free(file);
 }
@@ -693,6 +728,7 @@ int main(void)
         cmocka_unit_test(test_format_1_upgrades),
         cmocka_unit_test(test_snapshot_round_trip_10000),
         cmocka_unit_test(test_apply_frame_offsets),
+        cmocka_unit_test(test_checkpoint_read),
         cmocka_unit_test(test_apply_frame_every_offset),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

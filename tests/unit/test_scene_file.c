@@ -492,7 +492,7 @@ static void test_malformed_inputs(void **state)
         {"pogon-scenery 1\n", PG_ERR_INVALID_ARGUMENT, 1, 1, "got 'pogon-scenery'"},
         /* keywords */
         {"pogon-scene 1\nfoo 1 2\n", PG_ERR_INVALID_ARGUMENT, 2, 1,
-         "expected a setting, 'body' or a ready-made kind (ball capsule box triangle star wall concave chain), got 'foo'"},
+         "expected a setting, 'body', a ready-made kind (ball capsule box triangle star wall concave chain) or 'joint', got 'foo'"},
         {"pogon-scene 1\nbody dynamic\n  spin 3\nend\n", PG_ERR_INVALID_ARGUMENT, 3, 3, "expected a body property, 'shape' or 'end', got 'spin'"},
         {"pogon-scene 1\nball 1 colour red\n", PG_ERR_INVALID_ARGUMENT, 2, 8, "expected a property of ball, got 'colour'"},
         {"pogon-scene 1\nbody dynamic\n  shape hexagon 1\nend\n", PG_ERR_INVALID_ARGUMENT, 3, 9, "expected a shape kind"},

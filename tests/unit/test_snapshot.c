@@ -604,7 +604,7 @@ static void test_damage_is_located_and_versions_named(void **state)
     assert_true(reseal(copy, s.size));
     assert_int_equal(pg_world_snapshot_restore(dst.t.w, copy, s.size), PG_ERR_INCOMPATIBLE);
     assert_string_equal(pg_world_last_error(dst.t.w),
-                        "PG_ERR_INCOMPATIBLE: snapshot format version 3 at offset 4; this build reads version 5 only (save it again with this build)");
+                        "PG_ERR_INCOMPATIBLE: snapshot format version 3 at offset 4; this build reads version 6 only (save it again with this build)");
     assert_true(pg_world_hash(dst.t.w) == h);
     t_free(copy);
     free_snapshot(&s);
@@ -626,7 +626,7 @@ static void test_other_numerics_refused(void **state)
     (void)state;
     assert_non_null(copy);
     /* the header as saved */
-    assert_int_equal(s.bytes[4] | s.bytes[5] << 8, 5);
+    assert_int_equal(s.bytes[4] | s.bytes[5] << 8, 6);
     assert_int_equal(s.bytes[6] | s.bytes[7] << 8, POGON_VERSION_MAJOR);
     assert_int_equal(s.bytes[8] | s.bytes[9] << 8, POGON_VERSION_MINOR);
     assert_int_equal(s.bytes[10] | s.bytes[11] << 8, POGON_VERSION_PATCH);

@@ -51,6 +51,19 @@
  *     set_restitution BODY R                 set_density BODY D
  *     set_fixed_rotation BODY 0|1            set_filter BODY CATEGORY MASK
  *     set_user_data BODY U64
+ *     create_distance_joint BODY_A BODY_B [J]  create_revolute_joint BODY_A BODY_B [J]
+ *     create_weld_joint BODY_A BODY_B [J]      create_prismatic_joint BODY_A BODY_B [J]
+ *     create_mouse_joint BODY [J]              destroy_joint JOINT
+ *     set_joint_motor JOINT 0|1 SPEED MAX      set_joint_limits JOINT 0|1 LOWER UPPER
+ *     set_mouse_target JOINT X Y               set_mouse_max_force JOINT F
+ *   JOINT is jI:G (the handle with index I and generation G), jlast (the joint made by
+ *   the latest create_*_joint of the script) or j$K (the K-th joint it made, from 0).
+ *   J (key=value, the def's fields; the rest keep the def's defaults): ax ay bx by
+ *   (local anchors), length, spring, hertz, damping (distance: spring; mouse), limit,
+ *   lower, upper (distance: min/max length; revolute: angles in rad; prismatic:
+ *   translations), motor, speed, max_motor (torque or force), reference_angle
+ *   (degrees), axis_x axis_y, linear_hertz linear_damping angular_hertz angular_damping
+ *   (weld), tx ty (mouse target), max_force (mouse), collide, user_data.
  *   KIND: ball (SIZE0 radius), capsule (length radius), box (width height), triangle
  *   (circumradius), star (circumradius), wall (width height).
  *   GEOMETRY: circle CX CY R | segment AX AY BX BY | capsule AX AY BX BY R |
@@ -814,7 +827,8 @@ typedef struct body_ref { ref_kind kind; uint32_t a, b; } body_ref;
 typedef struct script_cmd {
     uint32_t frame, line;
     pg_command cmd;
-    body_ref ref;
+    body_ref ref, ref2; /* ref2: a joint's body B */
+    body_ref jref;      /* the joint a joint command acts on (REF_HANDLE, REF_LAST, REF_MADE) */
 } script_cmd;
 
 typedef struct script {
@@ -1026,6 +1040,125 @@ static int parse_make_kind(const char *t, pg_make_kind *k)
     return 0;
 }
 
+/* jI:G, jlast or j$K */
+static int parse_joint_ref(const char *t, body_ref *ref)
+{
+    if (t[0] != 'j' || t[1] == '#') return 0; /* joints have no slot form */
+    return parse_ref(t + 1, ref);             /* jlast, j$K, jI:G */
+}
+
+/* key=value fields of a joint def, into the def of c's kind. */
+static int parse_joint_options(const script *s, uint32_t line, tokens *tk, int from, pg_command *c)
+{
+    pg_command_joint_def *j = &c->joint_def;
+    int i;
+    for (i = from; i < tk->n; ++i) {
+        char *eq = strchr(tk->v[i], '='), *key = tk->v[i], *val;
+        pg_fix f = 0;
+        uint64_t u = 0;
+        pg_angle ang = 0;
+        int isfix, ok = 1;
+        pg_command_kind k = c->kind;
+        if (eq == NULL) return script_error(s, line, "expected key=value", tk->v[i]);
+        *eq = '\0';
+        val = eq + 1;
+        isfix = parse_fix(val, &f);
+#define FIXKEY(name, kind, field) else if (strcmp(key, name) == 0 && k == kind) { if (!isfix) ok = 0; else field = f; }
+#define FLAGKEY(name, kind, field) else if (strcmp(key, name) == 0 && k == kind) { if (!parse_u64(val, &u) || u > 1) ok = 0; else field = (int)u; }
+        if (0) {}
+        FIXKEY("ax", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.local_anchor_a.x) FIXKEY("ay", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.local_anchor_a.y)
+        FIXKEY("bx", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.local_anchor_b.x) FIXKEY("by", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.local_anchor_b.y)
+        FIXKEY("length", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.length) FLAGKEY("spring", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.enable_spring)
+        FIXKEY("hertz", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.hertz) FIXKEY("damping", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.damping_ratio)
+        FLAGKEY("limit", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.enable_limit) FIXKEY("lower", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.min_length)
+        FIXKEY("upper", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.max_length) FLAGKEY("collide", PG_CMD_CREATE_DISTANCE_JOINT, j->distance.collide_connected)
+        FIXKEY("ax", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.local_anchor_a.x) FIXKEY("ay", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.local_anchor_a.y)
+        FIXKEY("bx", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.local_anchor_b.x) FIXKEY("by", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.local_anchor_b.y)
+        FLAGKEY("limit", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.enable_limit) FIXKEY("lower", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.lower_angle)
+        FIXKEY("upper", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.upper_angle) FLAGKEY("motor", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.enable_motor)
+        FIXKEY("speed", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.motor_speed) FIXKEY("max_motor", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.max_motor_torque)
+        FLAGKEY("collide", PG_CMD_CREATE_REVOLUTE_JOINT, j->revolute.collide_connected)
+        FIXKEY("ax", PG_CMD_CREATE_WELD_JOINT, j->weld.local_anchor_a.x) FIXKEY("ay", PG_CMD_CREATE_WELD_JOINT, j->weld.local_anchor_a.y)
+        FIXKEY("bx", PG_CMD_CREATE_WELD_JOINT, j->weld.local_anchor_b.x) FIXKEY("by", PG_CMD_CREATE_WELD_JOINT, j->weld.local_anchor_b.y)
+        FIXKEY("linear_hertz", PG_CMD_CREATE_WELD_JOINT, j->weld.linear_hertz) FIXKEY("linear_damping", PG_CMD_CREATE_WELD_JOINT, j->weld.linear_damping_ratio)
+        FIXKEY("angular_hertz", PG_CMD_CREATE_WELD_JOINT, j->weld.angular_hertz) FIXKEY("angular_damping", PG_CMD_CREATE_WELD_JOINT, j->weld.angular_damping_ratio)
+        FLAGKEY("collide", PG_CMD_CREATE_WELD_JOINT, j->weld.collide_connected)
+        FIXKEY("ax", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.local_anchor_a.x) FIXKEY("ay", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.local_anchor_a.y)
+        FIXKEY("bx", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.local_anchor_b.x) FIXKEY("by", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.local_anchor_b.y)
+        FIXKEY("axis_x", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.local_axis_a.x) FIXKEY("axis_y", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.local_axis_a.y)
+        FLAGKEY("limit", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.enable_limit) FIXKEY("lower", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.lower_translation)
+        FIXKEY("upper", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.upper_translation) FLAGKEY("motor", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.enable_motor)
+        FIXKEY("speed", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.motor_speed) FIXKEY("max_motor", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.max_motor_force)
+        FLAGKEY("collide", PG_CMD_CREATE_PRISMATIC_JOINT, j->prismatic.collide_connected)
+        FIXKEY("tx", PG_CMD_CREATE_MOUSE_JOINT, j->mouse.target.x) FIXKEY("ty", PG_CMD_CREATE_MOUSE_JOINT, j->mouse.target.y)
+        FIXKEY("hertz", PG_CMD_CREATE_MOUSE_JOINT, j->mouse.hertz) FIXKEY("damping", PG_CMD_CREATE_MOUSE_JOINT, j->mouse.damping_ratio)
+        FIXKEY("max_force", PG_CMD_CREATE_MOUSE_JOINT, j->mouse.max_force)
+        else if (strcmp(key, "reference_angle") == 0 && (k == PG_CMD_CREATE_REVOLUTE_JOINT || k == PG_CMD_CREATE_WELD_JOINT || k == PG_CMD_CREATE_PRISMATIC_JOINT)) {
+            if (!parse_angle(val, &ang)) ok = 0;
+            else if (k == PG_CMD_CREATE_REVOLUTE_JOINT) j->revolute.reference_angle = ang;
+            else if (k == PG_CMD_CREATE_WELD_JOINT) j->weld.reference_angle = ang;
+            else j->prismatic.reference_angle = ang;
+        } else if (strcmp(key, "user_data") == 0) {
+            if (!parse_u64(val, &u)) ok = 0;
+            else if (k == PG_CMD_CREATE_DISTANCE_JOINT) j->distance.user_data = u;
+            else if (k == PG_CMD_CREATE_REVOLUTE_JOINT) j->revolute.user_data = u;
+            else if (k == PG_CMD_CREATE_WELD_JOINT) j->weld.user_data = u;
+            else if (k == PG_CMD_CREATE_PRISMATIC_JOINT) j->prismatic.user_data = u;
+            else j->mouse.user_data = u;
+        } else {
+            *eq = '=';
+            return script_error(s, line, "unknown option for this joint kind", tk->v[i]);
+        }
+#undef FIXKEY
+#undef FLAGKEY
+        if (!ok) {
+            *eq = '=';
+            return script_error(s, line, "bad value", tk->v[i]);
+        }
+    }
+    return 1;
+}
+
+/* The joint commands' lines. */
+static int parse_joint_line(const script *s, uint32_t line, tokens *tk, script_cmd *out)
+{
+    pg_command *c = &out->cmd;
+    char **a = tk->v + 2;
+    int nargs = tk->n - 2;
+    switch (c->kind) {
+    case PG_CMD_CREATE_MOUSE_JOINT:
+        if (nargs < 1 || !parse_ref(a[0], &out->ref)) return script_error(s, line, "usage: create_mouse_joint BODY [key=value...]", NULL);
+        return parse_joint_options(s, line, tk, 3, c);
+    case PG_CMD_CREATE_DISTANCE_JOINT:
+    case PG_CMD_CREATE_REVOLUTE_JOINT:
+    case PG_CMD_CREATE_WELD_JOINT:
+    case PG_CMD_CREATE_PRISMATIC_JOINT:
+        if (nargs < 2 || !parse_ref(a[0], &out->ref) || !parse_ref(a[1], &out->ref2))
+            return script_error(s, line, "usage: create_..._joint BODY_A BODY_B [key=value...]", NULL);
+        return parse_joint_options(s, line, tk, 4, c);
+    default: break;
+    }
+    if (nargs < 1 || !parse_joint_ref(a[0], &out->jref)) return script_error(s, line, "expected a joint (jI:G, jlast or j$K)", nargs > 0 ? a[0] : NULL);
+    a++;
+    nargs--;
+    switch (c->kind) {
+    case PG_CMD_DESTROY_JOINT:
+        if (nargs != 0) return script_error(s, line, "usage: destroy_joint JOINT", NULL);
+        return 1;
+    case PG_CMD_SET_JOINT_MOTOR:
+    case PG_CMD_SET_JOINT_LIMITS:
+        if (nargs != 3 || !parse_u32(a[0], &c->flag) || c->flag > 1 || !parse_fix(a[1], &c->scalar) || !parse_fix(a[2], &c->scalar2))
+            return script_error(s, line, "usage: set_joint_motor|set_joint_limits JOINT 0|1 NUMBER NUMBER", NULL);
+        return 1;
+    case PG_CMD_SET_MOUSE_TARGET:
+        if (nargs != 2 || !parse_fix(a[0], &c->vec.x) || !parse_fix(a[1], &c->vec.y)) return script_error(s, line, "usage: set_mouse_target JOINT X Y", NULL);
+        return 1;
+    default: /* PG_CMD_SET_MOUSE_MAX_FORCE */
+        if (nargs != 1 || !parse_fix(a[0], &c->scalar)) return script_error(s, line, "usage: set_mouse_max_force JOINT F", NULL);
+        return 1;
+    }
+}
+
 /* Parse one script line (already tokenised; v[0] is the frame). */
 static int parse_line(const script *s, uint32_t line, tokens *tk, script_cmd *out)
 {
@@ -1038,6 +1171,8 @@ static int parse_line(const script *s, uint32_t line, tokens *tk, script_cmd *ou
     name = tk->v[1];
     out->line = line;
     out->ref.kind = REF_NONE;
+    out->ref2.kind = REF_NONE;
+    out->jref.kind = REF_NONE;
     for (k = 1; k < PG_CMD_KIND_COUNT; ++k)
         if (strcmp(name, pg_command_kind_name((pg_command_kind)k)) == 0) break;
     if (k == PG_CMD_KIND_COUNT) return script_error(s, line, "unknown command", name);
@@ -1045,6 +1180,7 @@ static int parse_line(const script *s, uint32_t line, tokens *tk, script_cmd *ou
     a = tk->v + 2;
     nargs = tk->n - 2;
 
+    if (c->kind >= PG_CMD_CREATE_DISTANCE_JOINT) return parse_joint_line(s, line, tk, out);
     switch (c->kind) {
     case PG_CMD_CREATE_BODY:
         c->body_def = pg_default_body_def();
@@ -1202,7 +1338,33 @@ typedef struct tracker {
     uint32_t slots;
     pg_body_id *made;    /* bodies made by the script, in order */
     size_t made_count, made_cap;
+    pg_joint_id *joints; /* joints made by the script, in order */
+    size_t joint_count, joint_cap;
 } tracker;
+
+/* A joint reference: a handle as is, or a joint the script made. */
+static int resolve_joint(const script *s, const script_cmd *sc, const tracker *t, pg_joint_id *id)
+{
+    char detail[64];
+    switch (sc->jref.kind) {
+    case REF_HANDLE:
+        id->index = sc->jref.a;
+        id->generation = sc->jref.b;
+        return 1;
+    case REF_LAST:
+        if (t->joint_count == 0) return script_error(s, sc->line, "'jlast' names no joint: no create_*_joint has succeeded before this line", NULL);
+        *id = t->joints[t->joint_count - 1];
+        return 1;
+    case REF_MADE:
+        if (sc->jref.a >= t->joint_count) {
+            snprintf(detail, sizeof detail, "j$%u", sc->jref.a);
+            return script_error(s, sc->line, "the script has not made this joint yet", detail);
+        }
+        *id = t->joints[sc->jref.a];
+        return 1;
+    default: return 1;
+    }
+}
 
 static int resolve(const script *s, const script_cmd *sc, const tracker *t, pg_body_id *id)
 {
@@ -1364,17 +1526,41 @@ static int cmd_record(int argc, char **argv)
         /* Resolve and apply in order: a later command may name a body an earlier one made. */
         for (i = 0; i < n; ++i) {
             script_cmd *c = &sc.items[first + i];
-            pg_body_id created;
-            if (!resolve(&sc, c, &t, &c->cmd.body)) return EXIT_BAD;
+            pg_body_id created, body_a = {0, 0}, body_b = {0, 0};
+            pg_joint_id made_joint;
+            if (c->cmd.kind >= PG_CMD_CREATE_DISTANCE_JOINT) { /* a joint's bodies are in its def */
+                body_ref r1 = c->ref, r2 = c->ref2;
+                script_cmd tmp = *c;
+                if (!resolve(&sc, c, &t, &body_a)) return EXIT_BAD;
+                tmp.ref = r2;
+                if (!resolve(&sc, &tmp, &t, &body_b)) return EXIT_BAD;
+                (void)r1;
+                switch (c->cmd.kind) {
+                case PG_CMD_CREATE_DISTANCE_JOINT: c->cmd.joint_def.distance.body_a = body_a, c->cmd.joint_def.distance.body_b = body_b; break;
+                case PG_CMD_CREATE_REVOLUTE_JOINT: c->cmd.joint_def.revolute.body_a = body_a, c->cmd.joint_def.revolute.body_b = body_b; break;
+                case PG_CMD_CREATE_WELD_JOINT: c->cmd.joint_def.weld.body_a = body_a, c->cmd.joint_def.weld.body_b = body_b; break;
+                case PG_CMD_CREATE_PRISMATIC_JOINT: c->cmd.joint_def.prismatic.body_a = body_a, c->cmd.joint_def.prismatic.body_b = body_b; break;
+                case PG_CMD_CREATE_MOUSE_JOINT: c->cmd.joint_def.mouse.body = body_a; break;
+                default: if (!resolve_joint(&sc, c, &t, &c->cmd.joint)) return EXIT_BAD; break;
+                }
+            } else if (!resolve(&sc, c, &t, &c->cmd.body)) {
+                return EXIT_BAD;
+            }
             cmds[i] = c->cmd;
-            r = pg_command_apply(world, &cmds[i], &created);
+            r = pg_command_apply_made(world, &cmds[i], &created, &made_joint);
             if (r != PG_OK) {
                 failures++;
                 fprintf(stderr, "%s:%u: note: frame %u: %s fails: %s (recorded anyway: it fails the same on replay)\n",
                         script_path, c->line, f, pg_command_kind_name(c->cmd.kind), pg_world_last_error(world));
                 continue;
             }
-            if (c->cmd.kind == PG_CMD_CREATE_BODY || c->cmd.kind == PG_CMD_MAKE) {
+            if (c->cmd.kind >= PG_CMD_CREATE_DISTANCE_JOINT && c->cmd.kind <= PG_CMD_CREATE_MOUSE_JOINT) {
+                if (t.joint_count == t.joint_cap) {
+                    t.joint_cap = t.joint_cap ? t.joint_cap * 2 : 16;
+                    t.joints = (pg_joint_id *)xrealloc(t.joints, sizeof(pg_joint_id) * t.joint_cap);
+                }
+                t.joints[t.joint_count++] = made_joint;
+            } else if (c->cmd.kind == PG_CMD_CREATE_BODY || c->cmd.kind == PG_CMD_MAKE) {
                 if (t.made_count == t.made_cap) {
                     t.made_cap = t.made_cap ? t.made_cap * 2 : 16;
                     t.made = (pg_body_id *)xrealloc(t.made, sizeof(pg_body_id) * t.made_cap);
@@ -1397,6 +1583,7 @@ static int cmd_record(int argc, char **argv)
     free(cmds);
     free(t.gen);
     free(t.made);
+    free(t.joints);
     free(sc.items);
     free(memory);
     free(scene_text);

@@ -30,6 +30,7 @@ static inline int64_t pg__round_shift64(int64_t x, int n)
      * the same as subtracting (x < 0) in fewer instructions (in wasm a comparison yields
      * an i32 that must be widened) */
     int64_t half = (int64_t)1 << (n - 1);
+    /* cppcheck-suppress shiftTooManyBitsSigned ; implementation-defined, pinned to arithmetic by fixed.h's check */
     return (x + half + (x >> 63)) >> n;
 }
 
