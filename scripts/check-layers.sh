@@ -102,6 +102,18 @@ if ! tsort "$tmp/edges" > "$tmp/order" 2> "$tmp/loop"; then
   exit 1
 fi
 
+# The core library target (POGON_CORE_SOURCES in src/CMakeLists.txt, docs/modules.md)
+# must link alone: a module of it may depend only on core modules and on headers without
+# a .c (types, inline helpers), never on a file of another module target.
+if [ -f "$src/CMakeLists.txt" ] && grep -q 'set(POGON_CORE_SOURCES' "$src/CMakeLists.txt"; then
+  sed -n '/set(POGON_CORE_SOURCES/,/)/p' "$src/CMakeLists.txt" | sed -n 's/^[ \t]*\([A-Za-z0-9_]*\)\.c[ \t]*$/\1/p' > "$tmp/core"
+  for f in "$src"/*.c; do basename "$f" .c; done > "$tmp/with_c"
+  awk 'FILENAME == ARGV[1] { core[$1] = 1; next } FILENAME == ARGV[2] { hasc[$1] = 1; next }
+       $1 != $2 && ($1 in core) && ($2 in hasc) && !($2 in core) {
+         printf "check-layers: core module %s depends on %s, which is not in POGON_CORE_SOURCES (src/CMakeLists.txt)\n", $1, $2; bad = 1 }
+       END { exit bad }' "$tmp/core" "$tmp/with_c" "$tmp/edges" >&2 || status=1
+fi
+
 # layers: tsort prints a module before what it depends on, so walk its order backwards
 [ "$markdown" -eq 0 ] || echo '```'
 awk '$1 != $2 { dep[$1] = dep[$1] " " $2 } END { for (m in dep) print m dep[m] }' "$tmp/edges" > "$tmp/deps"

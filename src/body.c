@@ -117,7 +117,7 @@ pg_result pg_body_create(pg_world *world, const pg_body_def *def, pg_body_id *ou
     b->flags = PG_BODY_FLAG_USED | PG_BODY_FLAG_GEOMETRY_DIRTY;
     if (def->fixed_rotation) b->flags |= PG_BODY_FLAG_FIXED_ROTATION;
     if (def->allow_sleep) b->flags |= PG_BODY_FLAG_ALLOW_SLEEP;
-    if (def->awake || def->type == PG_BODY_KINEMATIC || (world->def.effects & PG_EFFECT_SLEEPING) == 0) b->flags |= PG_BODY_FLAG_AWAKE;
+    if (def->awake || def->type == PG_BODY_KINEMATIC || (world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) == 0) b->flags |= PG_BODY_FLAG_AWAKE;
     b->type = def->type;
     b->origin = def->position;
     b->center = def->position;
@@ -197,12 +197,29 @@ const char *pg__mass_data_problem(pg_mass_data md, int rotates)
     return NULL;
 }
 
+/* A body's geometries and densities for pg_compound_mass (at most 64 shapes, plus one
+ * being added), in the world's solver scratch, which is free between steps; the
+ * compound's work space follows them (pg__body_mass_scratch_bytes). */
+typedef struct mass_lists {
+    const pg_geom *geoms[65];
+    pg_fix densities[65];
+} mass_lists;
+
+#define MASS_LISTS_BYTES ((sizeof(mass_lists) + 7u) & ~(size_t)7u) /* the work space is 8-aligned */
+
+size_t pg__body_mass_scratch_bytes(void) { return MASS_LISTS_BYTES + pg__mass_work_bytes(); }
+
+static mass_lists *lists_of(const pg_world *world) { return (mass_lists *)world->solver_scratch; }
+
+void *pg__body_mass_work(const pg_world *world) { return (unsigned char *)world->solver_scratch + MASS_LISTS_BYTES; }
+
 const char *pg__body_mass_problem(const pg_world *world, uint32_t body_index, pg_fix density, uint32_t skip,
                                   const pg_geom *extra, pg_fix extra_density, int rotates)
 {
     const pg_body *b = &world->bodies[body_index];
-    const pg_geom *geoms[65];
-    pg_fix densities[65];
+    mass_lists *l = lists_of(world);
+    const pg_geom **geoms = l->geoms;
+    pg_fix *densities = l->densities;
     int n = 0;
     uint32_t s;
     pg_mass_data md;
@@ -217,7 +234,7 @@ const char *pg__body_mass_problem(const pg_world *world, uint32_t body_index, pg
         densities[n] = extra_density;
         ++n;
     }
-    md = pg_compound_mass(geoms, densities, n);
+    md = pg_compound_mass(geoms, densities, n, pg__body_mass_work(world));
     return pg__mass_data_problem(md, rotates);
 }
 
@@ -250,8 +267,9 @@ void pg__body_set_inverse_mass(pg_body *b)
 void pg__body_update_mass(pg_world *world, uint32_t body_index)
 {
     pg_body *b = &world->bodies[body_index];
-    const pg_geom *geoms[64];
-    pg_fix densities[64];
+    mass_lists *l = lists_of(world);
+    const pg_geom **geoms = l->geoms;
+    pg_fix *densities = l->densities;
     int n = 0;
     uint32_t s;
     pg_mass_data md;
@@ -270,7 +288,7 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index)
         densities[n] = world->shapes[s].density;
         ++n;
     }
-    md = pg_compound_mass(geoms, densities, n);
+    md = pg_compound_mass(geoms, densities, n, pg__body_mass_work(world));
     if (md.mass <= 0) { /* only segments, or density 0: a point of 1 kg */
         b->mass = INT64_C(1) << 32;
     } else {
@@ -290,7 +308,7 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
     int turning;
     pg_fix margin = PG_SPECULATIVE_DISTANCE;
     pg_fix sweep_x = 0, sweep_y = 0;
-    if (b->type != PG_BODY_STATIC && (world->def.effects & PG_EFFECT_CONTINUOUS) != 0) {
+    if (b->type != PG_BODY_STATIC && (world->def.effects & PG__EFFECT(PG_EFFECT_CONTINUOUS)) != 0) {
         /* A fast body's box grows by the distance it may travel in this step, so the
          * speculative contacts can stop it at a surface instead of letting it tunnel. */
         pg_fix dx = (pg_fix)(pg_fix_abs(b->v.x) / (int32_t)world->def.step_hz);
@@ -449,7 +467,7 @@ pg_result pg_body_set_awake(pg_world *world, pg_body_id id, int awake)
     if (b->type == PG_BODY_STATIC) return PG_OK;
     if (awake) {
         pg__wake_body(world, id.index);
-    } else if ((world->def.effects & PG_EFFECT_SLEEPING) != 0 && b->type == PG_BODY_DYNAMIC) {
+    } else if ((world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) != 0 && b->type == PG_BODY_DYNAMIC) {
         b->flags = (b->flags & ~(uint32_t)PG_BODY_FLAG_AWAKE) | PG_BODY_FLAG_GEOMETRY_DIRTY;
         b->v = pg_v2_zero();
         b->w = 0;

@@ -9,6 +9,12 @@
 
 pg_body *pg__body(const pg_world *world, pg_body_id id); /* NULL if stale */
 void pg__body_update_mass(pg_world *world, uint32_t body_index);
+/* Scratch bytes the mass of a body needs between steps (pg_compound_mass's work space and
+ * the list of a body's up to 65 geometries and densities): the world's solver scratch is
+ * never smaller (world.c), so shape and body calls keep them off the stack. */
+size_t pg__body_mass_scratch_bytes(void);
+/* That work space for pg_compound_mass, in the world's scratch: valid between steps only */
+void *pg__body_mass_work(const pg_world *world);
 /* inv_mass and inv_inertia from mass, inertia, type and fixed rotation: the one rule, for
  * pg__body_update_mass and for restoring a snapshot (which stores only mass and inertia) */
 void pg__body_set_inverse_mass(pg_body *b);

@@ -50,35 +50,30 @@ size_t pg_broadphase_scratch_bytes(uint32_t max_proxies, uint32_t max_pairs)
 
 /* ---- stable LSD radix sort ------------------------------------------------------ */
 /* Sorts keys[0..n) by bits [lo, lo + nbits) (nbits <= 64 - lo), stably, with tmp as the
- * second buffer. Returns the buffer that holds the result (keys or tmp). */
+ * second buffer. Returns the buffer that holds the result (keys or tmp). Each pass counts
+ * its own digit, so one table of 256 counts is live at a time (1 KiB of stack on a
+ * 32-bit target) rather than one per pass. */
 static uint64_t *bp_radix(uint64_t *keys, uint64_t *tmp, size_t n, unsigned lo, unsigned nbits)
 {
-    size_t hist[8][256];
-    uint64_t mask[8];
+    size_t hist[256];
     unsigned passes = (nbits + 7u) / 8u, p;
     size_t i;
     uint64_t *src = keys, *dst = tmp;
     if (n < 2 || passes == 0) return keys;
     for (p = 0; p < passes; ++p) {
-        unsigned d, left = nbits - 8u * p; /* bits of the range from this digit on */
-        mask[p] = left >= 8u ? 0xffu : ((uint64_t)1 << left) - 1u;
-        for (d = 0; d < 256u; ++d) hist[p][d] = 0;
-    }
-    for (i = 0; i < n; ++i) {
-        uint64_t k = keys[i] >> lo;
-        for (p = 0; p < passes; ++p) hist[p][(k >> (8u * p)) & mask[p]]++;
-    }
-    for (p = 0; p < passes; ++p) {
-        unsigned shift = lo + 8u * p, d;
+        unsigned shift = lo + 8u * p, d, left = nbits - 8u * p; /* bits of the range from this digit on */
+        uint64_t mask = left >= 8u ? 0xffu : ((uint64_t)1 << left) - 1u;
         size_t sum = 0;
         uint64_t *t;
-        if (hist[p][(src[0] >> shift) & mask[p]] == n) continue; /* one bucket: a no-op pass */
+        for (d = 0; d < 256u; ++d) hist[d] = 0;
+        for (i = 0; i < n; ++i) hist[(src[i] >> shift) & mask]++;
+        if (hist[(src[0] >> shift) & mask] == n) continue; /* one bucket: a no-op pass */
         for (d = 0; d < 256u; ++d) {
-            size_t c = hist[p][d];
-            hist[p][d] = sum;
+            size_t c = hist[d];
+            hist[d] = sum;
             sum += c;
         }
-        for (i = 0; i < n; ++i) dst[hist[p][(src[i] >> shift) & mask[p]]++] = src[i];
+        for (i = 0; i < n; ++i) dst[hist[(src[i] >> shift) & mask]++] = src[i];
         t = src;
         src = dst;
         dst = t;

@@ -66,7 +66,7 @@ static const char *mass_problem(pg_world *w, const pg_vec2 *v, const pg__decompo
         geoms[k] = &w->shapes[slot].local;
         densities[k] = density;
     }
-    return pg__mass_data_problem(pg_compound_mass(geoms, densities, d->count), rotates);
+    return pg__mass_data_problem(pg_compound_mass(geoms, densities, d->count, pg__body_mass_work(w)), rotates);
 }
 
 pg_result pg_make_concave(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, const pg_vec2 *vertices, int32_t count,

@@ -88,7 +88,7 @@ static void collide_pair(pg_world *w, uint32_t sa, uint32_t sb, const pg_contact
     pg_manifold m;
     int32_t i, j;
     pg_fix speculative = PG_SPECULATIVE_DISTANCE;
-    if ((w->def.effects & PG_EFFECT_CONTINUOUS) != 0) {
+    if ((w->def.effects & PG__EFFECT(PG_EFFECT_CONTINUOUS)) != 0) {
         /* Continuous collision: the speculative window covers how far the pair can close
          * in one step, so a fast body gets a contact before it reaches the surface and
          * the solver stops it there instead of letting it tunnel. */

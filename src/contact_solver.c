@@ -87,7 +87,7 @@ static denominator make_denominator(int64_t K)
     if (d.shift > 0) K31 = row_round(K, d.shift);
     else if (d.shift < 0) K31 = K * ((int64_t)1 << -d.shift);
     else K31 = K;
-    d.inv = K31 > 0 ? (int64_t)(((UINT64_C(1) << 62) + (uint64_t)K31 / 2u) / (uint64_t)K31) : 0;
+    d.inv = K31 > 0 ? (int64_t)pg__udiv64_32((UINT64_C(1) << 62) + (uint64_t)K31 / 2u, (uint32_t)K31) : 0; /* K31 < 2^31 */
     return d;
 }
 
@@ -125,7 +125,8 @@ static inline row_den make_row_denominator(int64_t K)
     r.s = s;
     K31 = ((K + r.half) >> s) << l; /* in [2^30, 2^31) for K > 0 */
     r.d.shift = shift;
-    r.d.inv = K31 > 0 ? (int64_t)(((UINT64_C(1) << 62) + (uint64_t)K31 / 2u) / (uint64_t)K31) : 0;
+    /* K31 < 2^31: a division by a 32-bit number, no 64-bit division per row */
+    r.d.inv = K31 > 0 ? (int64_t)pg__udiv64_32((UINT64_C(1) << 62) + (uint64_t)K31 / 2u, (uint32_t)K31) : 0;
     r.inv30 = r.d.inv << l;
     r.inv24 = (r.d.inv >> 8) << l;
     return r;
@@ -152,7 +153,9 @@ static pg_fix k_ratio(denominator t, denominator n)
     int diff = t.shift - n.shift;
     uint64_t r;
     if (t.inv <= 0) return 0;
-    r = (((uint64_t)n.inv << 16) + (uint64_t)t.inv / 2u) / (uint64_t)t.inv; /* in [2^15, 2^17] */
+    r = ((uint64_t)n.inv << 16) + (uint64_t)t.inv / 2u;
+    /* in [2^15, 2^17]; t.inv <= 2^32, which is 2^62 / K31 rounded for K31 = 2^30 only */
+    r = (uint64_t)t.inv <= UINT32_MAX ? pg__udiv64_32(r, (uint32_t)t.inv) : r / (uint64_t)t.inv;
     if (diff >= 15) return PG_FIX_MAX;
     if (diff >= 0) r <<= diff;
     else r = diff <= -40 ? 0 : (r + ((uint64_t)1 << (-diff - 1))) >> -diff;
@@ -313,7 +316,7 @@ static void setup_block(constraint *c)
     c->block = 1;
     c->e01 = (int32_t)e01;
     c->e10 = (int32_t)e10;
-    c->inv_det = (int32_t)(((INT64_C(1) << 54) + det / 2) / det);
+    c->inv_det = (int32_t)pg__udiv64_32((UINT64_C(1) << 54) + (uint64_t)det / 2u, (uint32_t)det); /* det <= 2^31 */
 }
 
 /* What a side that does not move in this step looks like to the rows: no inverse mass,
@@ -333,7 +336,7 @@ static int centred_circle(const pg_world *w, uint32_t shape, uint32_t body)
 PG__INLINE_ROW void prepare_point_rows(const step_context *ctx, constraint *c, const pg_body *A, const pg_body *B, int normal_turns,
                                        int tangent_turns)
 {
-    const int friction = (ctx->effects & PG_EFFECT_FRICTION) != 0;
+    const int friction = (ctx->effects & PG__EFFECT(PG_EFFECT_FRICTION)) != 0;
     const pg_fix mu = friction ? ctx->world->contacts[c->contact].friction : 0;
     pg_dir t;
     denominator dt = { 0, 0 };
@@ -721,7 +724,7 @@ PG__INLINE_PASS void solve_constraint(const step_context *ctx, const softness *s
      * which carries less than the load until the contact has sunk to the soft spring's
      * resting depth; in Q16.16 it may never get there (the last of the sinking moves a
      * body less than half a position step per substep), and friction would be weak. */
-    if ((ctx->effects & PG_EFFECT_FRICTION) != 0) {
+    if ((ctx->effects & PG__EFFECT(PG_EFFECT_FRICTION)) != 0) {
         /* one row: a single point's, or a face contact's central row (CENTRAL FRICTION:
          * with friction on, every two-point manifold has one), bounded by both points */
         int64_t bound = friction_bound(&c->p[0]);
@@ -962,7 +965,7 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
     if (!c->round_a) bodies[c->a].turns_anchors = 1;
     if (!c->round_b) bodies[c->b].turns_anchors = 1;
     c->normal_linear = 1;
-    c->restitution = (effects & PG_EFFECT_RESTITUTION) != 0 ? ct->restitution : 0;
+    c->restitution = (effects & PG__EFFECT(PG_EFFECT_RESTITUTION)) != 0 ? ct->restitution : 0;
     c->deep = 0; /* deep_push is set by every soft pass (set_push) before it is read */
     /* No torque about a round side's centre, and none on a side that cannot turn in this
      * step (its angular velocity is 0 and its inverse inertia too). */
@@ -1010,7 +1013,7 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
         p->cnB = turnB ? pg__sat64(p->xrB) : 0;
         if (p->cnA != 0 || p->cnB != 0) c->normal_linear = 0;
         p->normal_impulse = (pg_fix)clamp_lambda(cp->normal_impulse, 0, LAMBDA_MAX);
-        p->tangent_impulse = (effects & PG_EFFECT_FRICTION) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
+        p->tangent_impulse = (effects & PG__EFFECT(PG_EFFECT_FRICTION)) != 0 ? (pg_fix)clamp_lambda(cp->tangent_impulse, -LAMBDA_MAX, LAMBDA_MAX) : 0;
         p->max_normal_impulse = 0;
         if (p->normal_impulse != 0 || p->tangent_impulse != 0) held = 1;
         p->relative_velocity = 0; /* set before the point first pushes (APPROACH) */
@@ -1030,7 +1033,7 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
     }
     /* CENTRAL FRICTION: the row's lever arms are those of the mean anchor (r x t is linear
      * in r), and its lambda is what the two points stored */
-    c->central_friction = c->count == 2 && (effects & PG_EFFECT_FRICTION) != 0;
+    c->central_friction = c->count == 2 && (effects & PG__EFFECT(PG_EFFECT_FRICTION)) != 0;
     if (c->central_friction) {
         constraint_point *p0 = &c->p[0], *p1 = &c->p[1];
         p0->ctA = (pg_fix)row_round((int64_t)p0->ctA + p1->ctA, 1);
@@ -1076,8 +1079,16 @@ PG__NOINLINE uint32_t prepare_constraints(const step_context *ctx, solver_body *
  * total exactly. */
 static void split_central_friction(const constraint *c, pg_contact *ct)
 {
-    int64_t total = c->p[0].tangent_impulse, n0 = c->p[0].normal_impulse, n1 = c->p[1].normal_impulse;
-    int64_t part0 = n0 + n1 > 0 ? pg__div64_shl(total * n0, n0 + n1, 0) : row_round(total, 1);
+    int64_t total = c->p[0].tangent_impulse, n0 = c->p[0].normal_impulse, n1 = c->p[1].normal_impulse, part0;
+    if (n0 + n1 > 0 && n0 + n1 <= (int64_t)UINT32_MAX) {
+        /* pg__div64_shl(total n0, n0 + n1, 0) with a division by a 32-bit number: the same
+         * quotient, rounded the same way (|total n0| <= 2^58, so no clamp applies) */
+        uint64_t un = pg__mag64(total * n0), q = pg__udiv64_32(un, (uint32_t)(n0 + n1)), r = un - q * (uint64_t)(n0 + n1);
+        if (r >= (uint64_t)(n0 + n1) - r) ++q;
+        part0 = total * n0 < 0 ? -(int64_t)q : (int64_t)q;
+    } else {
+        part0 = n0 + n1 > 0 ? pg__div64_shl(total * n0, n0 + n1, 0) : row_round(total, 1);
+    }
     ct->points[0].tangent_impulse = (pg_fix)part0;
     ct->points[1].tangent_impulse = (pg_fix)(total - part0);
 }
@@ -1188,7 +1199,7 @@ void pg__contacts_relax(const pg_contact_stage *s, const step_context *ctx_in, s
 void pg__contacts_restitution(const pg_contact_stage *s, const step_context *ctx, solver_body *bodies)
 {
     uint32_t i;
-    if ((ctx->effects & PG_EFFECT_RESTITUTION) == 0) return;
+    if ((ctx->effects & PG__EFFECT(PG_EFFECT_RESTITUTION)) == 0) return;
     for (i = 0; i < s->count; ++i) restitution(&s->cons[i], bodies, ctx->world->def.restitution_threshold, ctx->h_q32 / 2);
 }
 

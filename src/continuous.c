@@ -152,7 +152,7 @@ int pg__turns_fast_now(const pg_world *w, const pg_body *b)
 {
     int64_t turn_rad;
     if (b->type != PG_BODY_DYNAMIC || b->w == 0 || b->turn_reach == 0 || (b->flags & PG_BODY_FLAG_FIXED_ROTATION) != 0) return 0;
-    if ((w->def.effects & (PG_EFFECT_CONTINUOUS | PG_EFFECT_ROTATION)) != (PG_EFFECT_CONTINUOUS | PG_EFFECT_ROTATION)) return 0;
+    if ((w->def.effects & PG__EFFECT(PG_EFFECT_CONTINUOUS)) == 0 || (w->def.effects & PG__EFFECT(PG_EFFECT_ROTATION)) == 0) return 0;
     turn_rad = turn_at_rate(b->w, w->def.step_hz);
     return turn_rad >= 0 && turns_fast(b, turn_rad);
 }

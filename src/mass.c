@@ -55,9 +55,12 @@
  *     (count >= 3) is ignored: the mass is that of the bare polygon. A geometry with
  *     count outside 1..PG_MAX_POLYGON_VERTICES, or a NULL entry, is skipped.
  *   - Cost: set-up time, not for inner loops. A single shape takes microseconds; eight
- *     mutually overlapping octagons (255 nonempty intersections) about 10 ms on a
- *     desktop x86-64. Stack: about 30 KB at most (the subset search keeps one clipped
- *     polygon per depth); no recursion beyond depth 8, no heap.
+ *     mutually overlapping octagons (255 nonempty intersections) a few tens of
+ *     milliseconds on a desktop x86-64, because the subset search recomputes each
+ *     subset's intersection from its polygons: it keeps the subset's indices, not one
+ *     clipped polygon per depth, so that its memory is small. Memory: the caller's work
+ *     space of pg__mass_work_bytes() (6144 bytes) and a few KB of stack (the stack
+ *     table of docs/embedded.md); no recursion, no heap.
  *   - Without mass (density 0) the centre is the centroid of the area; without area too
  *     (segments, points, degenerate polygons) it is the mean of the geometries' vertex
  *     averages (the midpoint of a segment). Mass and inertia are then 0.
@@ -71,6 +74,14 @@
  *   more geometries adds log2(count) < 31 bits: still below the sign bit, 2^383.
  */
 #include "mass.h"
+
+/* Kept out of line so that the stages of a compound, which run one after another, do
+ * not share one stack frame as large as all of them together. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PG__OUT_OF_LINE __attribute__((noinline))
+#else
+#define PG__OUT_OF_LINE
+#endif
 
 /* ---- multi-word signed integers --------------------------------------------------- */
 
@@ -198,7 +209,7 @@ static int pg__big_bitlen(const pg__big *a)
 
 /* round(num / den), nearest, ties away from zero, saturated to +-INT64_MAX. den == 0
  * saturates by the sign of num (0 for 0). Requires bitlen(|den|) <= 384 - 65. */
-static int64_t pg__big_div_round(pg__big num, pg__big den)
+PG__OUT_OF_LINE static int64_t pg__big_div_round(pg__big num, pg__big den)
 {
     int negative, k;
     pg__big d;
@@ -276,7 +287,7 @@ static void pg__moments_add(pg__moments *acc, const pg__moments *m, int64_t w)
 }
 
 /* Twice the signed area (sum of the fan's cross products), in u^2. */
-static pg__big pg__poly_cross_sum(const pg__pt *v, int n)
+PG__OUT_OF_LINE static pg__big pg__poly_cross_sum(const pg__pt *v, int n)
 {
     pg__big s = pg__big_i64(0);
     int i;
@@ -287,50 +298,75 @@ static pg__big pg__poly_cross_sum(const pg__pt *v, int n)
     return s;
 }
 
-static void pg__poly_moments(const pg__pt *v, int n, pg__moments *out)
+/* One fan triangle O, a, b of a polygon: adds its area and moments (not yet shifted by
+ * 2^61) to out. Apart from pg__poly_moments, so the temporaries of one edge are on the
+ * stack only while it runs. */
+PG__OUT_OF_LINE static void pg__fan_add(const pg__pt *a, const pg__pt *b, pg__moments *out)
+{
+    /* one product per statement: the sums are exact, so their order does not matter,
+     * and few temporaries are live at once */
+    pg__big c = pg__big_sub(pg__big_mul2(a->x, b->y), pg__big_mul2(a->y, b->x)), q = pg__big_mul2(a->x, a->x);
+    q = pg__big_add(q, pg__big_mul2(a->x, b->x));
+    q = pg__big_add(q, pg__big_mul2(b->x, b->x));
+    q = pg__big_add(q, pg__big_mul2(a->y, a->y));
+    q = pg__big_add(q, pg__big_mul2(a->y, b->y));
+    q = pg__big_add(q, pg__big_mul2(b->y, b->y));
+    out->m0 = pg__big_add(out->m0, pg__big_mul_i64(c, 12));
+    out->m1x = pg__big_add(out->m1x, pg__big_mul_i64(c, 4 * (a->x + b->x)));
+    out->m1y = pg__big_add(out->m1y, pg__big_mul_i64(c, 4 * (a->y + b->y)));
+    q = pg__big_mul(c, q);
+    out->m2 = pg__big_add(out->m2, pg__big_shl(q, 1));
+}
+
+PG__OUT_OF_LINE static void pg__poly_moments(const pg__pt *v, int n, pg__moments *out)
 {
     int i;
     pg__moments_zero(out);
-    for (i = 0; i < n; ++i) {
-        const pg__pt *a = &v[i], *b = &v[(i + 1) % n];
-        pg__big c = pg__big_sub(pg__big_mul2(a->x, b->y), pg__big_mul2(a->y, b->x));
-        pg__big q = pg__big_add(pg__big_add(pg__big_mul2(a->x, a->x), pg__big_mul2(a->x, b->x)),
-                                pg__big_mul2(b->x, b->x));
-        q = pg__big_add(q, pg__big_add(pg__big_add(pg__big_mul2(a->y, a->y), pg__big_mul2(a->y, b->y)),
-                                       pg__big_mul2(b->y, b->y)));
-        out->m0 = pg__big_add(out->m0, pg__big_mul_i64(c, 12));
-        out->m1x = pg__big_add(out->m1x, pg__big_mul_i64(c, 4 * (a->x + b->x)));
-        out->m1y = pg__big_add(out->m1y, pg__big_mul_i64(c, 4 * (a->y + b->y)));
-        out->m2 = pg__big_add(out->m2, pg__big_mul_i64(pg__big_mul(c, q), 2));
-    }
+    for (i = 0; i < n; ++i) pg__fan_add(&v[i], &v[(i + 1) % n], out);
     out->m0 = pg__big_shl(out->m0, 61);
     out->m1x = pg__big_shl(out->m1x, 61);
     out->m1y = pg__big_shl(out->m1y, 61);
     out->m2 = pg__big_shl(out->m2, 61);
 }
 
+/* The second moment of a capsule about O (times 24 2^61) from its parts: 24 I_centre =
+ * 4 r L^3 + 48 r^3 L + pi r^2 (12 r^2 + 6 L^2), plus 6 area |s|^2 (half = 12 area is
+ * even: 24 r L + 12 pi r^2). Apart from pg__capsule_moments, so that its temporaries and
+ * the square root's are not on the stack at once. */
+PG__OUT_OF_LINE static pg__big pg__capsule_second(const pg__big *rl, const pg__big *l2, const pg__big *r2, const pg__big *pir2,
+                                                  int64_t sx, int64_t sy)
+{
+    /* one product per statement (exact sums, any order): few temporaries live at once */
+    pg__big t = pg__big_mul(*rl, *l2), u;
+    t = pg__big_mul_i64(t, 4);
+    u = pg__big_mul(*rl, *r2);
+    t = pg__big_add(t, pg__big_mul_i64(u, 48));
+    u = pg__big_mul_i64(*r2, 12);
+    u = pg__big_add(u, pg__big_mul_i64(*l2, 6));
+    t = pg__big_add(t, pg__big_mul(*pir2, u));
+    u = pg__big_mul_i64(*rl, 12);
+    u = pg__big_add(u, pg__big_mul_i64(*pir2, 6));
+    u = pg__big_mul(pg__big_add(pg__big_mul2(sx, sx), pg__big_mul2(sy, sy)), u);
+    return pg__big_add(t, u);
+}
+
+/* L 2^61 = round(sqrt(L^2 2^122)) for the capsule's L^2. */
+PG__OUT_OF_LINE static pg__big pg__length_q61(const pg__big *l2) { return pg__big_isqrt_round(pg__big_shl(*l2, 122)); }
+
 /* Capsule p..q of radius r (u); p == q is a circle. */
-static void pg__capsule_moments(pg__pt p, pg__pt q, int64_t r, pg__moments *out)
+PG__OUT_OF_LINE static void pg__capsule_moments(pg__pt p, pg__pt q, int64_t r, pg__moments *out)
 {
     int64_t dx = q.x - p.x, dy = q.y - p.y, sx = p.x + q.x, sy = p.y + q.y;
     pg__big l2 = pg__big_add(pg__big_mul2(dx, dx), pg__big_mul2(dy, dy));      /* L^2 */
-    pg__big lq = pg__big_isqrt_round(pg__big_shl(l2, 122));                   /* L 2^61 */
-    pg__big s2 = pg__big_add(pg__big_mul2(sx, sx), pg__big_mul2(sy, sy));      /* |s|^2 */
-    pg__big br = pg__big_i64(r), r2 = pg__big_mul2(r, r);
+    pg__big lq = pg__length_q61(&l2);                                         /* L 2^61 */
+    pg__big r2 = pg__big_mul2(r, r);
     pg__big pir2 = pg__big_mul_i64(r2, PG__PI_Q61);                            /* pi r^2 2^61 */
-    pg__big rl = pg__big_mul(br, lq);                                          /* r L 2^61 */
+    pg__big rl = pg__big_mul_i64(lq, r);                                       /* r L 2^61 */
     pg__big half = pg__big_add(pg__big_mul_i64(rl, 24), pg__big_mul_i64(pir2, 12)); /* 12 area */
-    pg__big t;
     out->m0 = pg__big_shl(half, 1);
     out->m1x = pg__big_mul_i64(half, sx);
     out->m1y = pg__big_mul_i64(half, sy);
-    /* 24 I_centre = 4 r L^3 + 48 r^3 L + pi r^2 (12 r^2 + 6 L^2); plus 6 area |s|^2 */
-    t = pg__big_mul_i64(pg__big_mul(rl, l2), 4);
-    t = pg__big_add(t, pg__big_mul_i64(pg__big_mul(rl, r2), 48));
-    t = pg__big_add(t, pg__big_mul(pir2, pg__big_add(pg__big_mul_i64(r2, 12), pg__big_mul_i64(l2, 6))));
-    /* 6 area |s|^2 (half = 12 area is even: 24 r L + 12 pi r^2) */
-    t = pg__big_add(t, pg__big_mul(s2, pg__big_add(pg__big_mul_i64(rl, 12), pg__big_mul_i64(pir2, 6))));
-    out->m2 = t;
+    out->m2 = pg__capsule_second(&rl, &l2, &r2, &pir2, sx, sy);
 }
 
 /* ---- convex clipping ---------------------------------------------------------------- */
@@ -358,9 +394,22 @@ static pg__line pg__line_of(const pg__poly *polys, int id)
 typedef struct pg__cv { pg__pt p; int line; } pg__cv;
 
 /* The exact side of p relative to the directed line l (positive on the left). */
+/* a b - c d, exactly. Out of line, like pg__ratio, so that the crossing below holds
+ * only its named values on the stack, not every temporary of their products. */
+PG__OUT_OF_LINE static pg__big pg__det2(int64_t a, int64_t b, int64_t c, int64_t d)
+{
+    return pg__big_sub(pg__big_mul2(a, b), pg__big_mul2(c, d));
+}
+
+/* round((p x - q y) / d), as pg__big_div_round rounds it. */
+PG__OUT_OF_LINE static int64_t pg__ratio(const pg__big *p, int64_t x, const pg__big *q, int64_t y, const pg__big *d)
+{
+    return pg__big_div_round(pg__big_sub(pg__big_mul_i64(*p, x), pg__big_mul_i64(*q, y)), *d);
+}
+
 static pg__big pg__side(const pg__line *l, pg__pt p)
 {
-    return pg__big_sub(pg__big_mul2(l->b.x - l->a.x, p.y - l->a.y), pg__big_mul2(l->b.y - l->a.y, p.x - l->a.x));
+    return pg__det2(l->b.x - l->a.x, p.y - l->a.y, l->b.y - l->a.y, p.x - l->a.x);
 }
 
 /* Where the edge s..e (on the line es) crosses the line l (s and e strictly on opposite
@@ -375,12 +424,12 @@ static pg__pt pg__crossing(const pg__line *es, const pg__line *l, pg__pt s, pg__
 {
     pg__pt r;
     int64_t x12 = es->a.x - es->b.x, y12 = es->a.y - es->b.y, x34 = l->a.x - l->b.x, y34 = l->a.y - l->b.y;
-    pg__big d = pg__big_sub(pg__big_mul2(x12, y34), pg__big_mul2(y12, x34)), ds, de;
+    pg__big d = pg__det2(x12, y34, y12, x34), ds, de;
     if (!pg__big_is_zero(&d)) {
-        pg__big c12 = pg__big_sub(pg__big_mul2(es->a.x, es->b.y), pg__big_mul2(es->a.y, es->b.x));
-        pg__big c34 = pg__big_sub(pg__big_mul2(l->a.x, l->b.y), pg__big_mul2(l->a.y, l->b.x));
-        r.x = pg__big_div_round(pg__big_sub(pg__big_mul_i64(c12, x34), pg__big_mul_i64(c34, x12)), d);
-        r.y = pg__big_div_round(pg__big_sub(pg__big_mul_i64(c12, y34), pg__big_mul_i64(c34, y12)), d);
+        pg__big c12 = pg__det2(es->a.x, es->b.y, es->a.y, es->b.x);
+        pg__big c34 = pg__det2(l->a.x, l->b.y, l->a.y, l->b.x);
+        r.x = pg__ratio(&c12, x34, &c34, x12, &d);
+        r.y = pg__ratio(&c12, y34, &c34, y12, &d);
         if (r.x >= (s.x < e.x ? s.x : e.x) - 2 && r.x <= (s.x > e.x ? s.x : e.x) + 2 &&
             r.y >= (s.y < e.y ? s.y : e.y) - 2 && r.y <= (s.y > e.y ? s.y : e.y) + 2)
             return r;
@@ -388,8 +437,8 @@ static pg__pt pg__crossing(const pg__line *es, const pg__line *l, pg__pt s, pg__
     ds = pg__side(l, s);
     de = pg__side(l, e);
     d = pg__big_sub(ds, de);
-    r.x = pg__big_div_round(pg__big_sub(pg__big_mul_i64(ds, e.x), pg__big_mul_i64(de, s.x)), d);
-    r.y = pg__big_div_round(pg__big_sub(pg__big_mul_i64(ds, e.y), pg__big_mul_i64(de, s.y)), d);
+    r.x = pg__ratio(&ds, e.x, &de, s.x, &d);
+    r.y = pg__ratio(&ds, e.y, &de, s.y, &d);
     return r;
 }
 
@@ -441,54 +490,166 @@ static int pg__clip(const pg__poly *polys, const pg__cv *in, int n, int lid, pg_
 
 typedef struct pg__acc { pg__moments mass, area; } pg__acc;
 
-/* Work space of the subset search (about 18 KB, on the caller's stack): the
- * intersection of the current subset at each depth, and two clipping buffers. */
-typedef struct pg__overlap {
-    const pg__poly *polys;
-    int np;
-    pg__acc *acc;
-    pg__cv level[PG__MASS_MAX_OVERLAP][PG__CLIP_MAX];
-    pg__cv scratch[2][PG__CLIP_MAX];
+/* The caller's work space (mass.h): the sums of the moments, the first polygons, two
+ * clipping buffers and the points of the intersection being measured. */
+typedef struct pg__mass_work {
+    pg__acc acc;
+    pg__poly polys[PG__MASS_MAX_OVERLAP];
+    pg__cv buf[2][PG__CLIP_MAX];
     pg__pt pts[PG__CLIP_MAX];
-} pg__overlap;
+} pg__mass_work;
 
-/* Adds the intersections of level[depth] (n vertices: the intersection of the subset S
- * chosen so far, whose last polygon is `last`) with every choice of further polygons
- * j > last. sign = (-1)^(|S|-1). */
-static void pg__overlap_dfs(pg__overlap *w, int depth, int n, int last, int64_t sign)
+/* PG__MASS_WORK_BYTES (mass.h) must hold it: a negative array size fails to compile */
+typedef char pg__mass_work_fits[sizeof(pg__mass_work) <= PG__MASS_WORK_BYTES ? 1 : -1];
+
+size_t pg__mass_work_bytes(void) { return sizeof(pg__mass_work); }
+
+/* The intersection of the polygons subset[0..n) (ascending indices): polygon subset[0]
+ * clipped by every edge line of the others in turn, stopping once fewer than 3 vertices
+ * remain. Returns the vertex count and sets *out to the buffer holding them. The same
+ * clips in the same order as when the subset was first reached, so the same vertices:
+ * the subset search keeps only the indices of its current subset, not one clipped
+ * polygon per depth, and recomputes (about 3 KiB of work space instead of 16). */
+static int pg__intersect(pg__mass_work *w, const int *subset, int n, const pg__cv **out)
 {
-    int j, k, i;
-    for (j = last + 1; j < w->np; ++j) {
-        const pg__poly *pj = &w->polys[j];
-        const pg__cv *src = w->level[depth];
-        int m = n, which = 0;
-        pg__moments g;
-        pg__big x;
+    const pg__poly *p0 = &w->polys[subset[0]];
+    int i, t, k, m = p0->n, which = 1;
+    for (i = 0; i < m; ++i) {
+        w->buf[0][i].p = p0->v[i];
+        w->buf[0][i].line = subset[0] * PG_MAX_POLYGON_VERTICES + i;
+    }
+    for (t = 1; t < n && m >= 3; ++t) {
+        const pg__poly *pj = &w->polys[subset[t]];
         for (k = 0; k < pj->n && m >= 3; ++k) {
-            m = pg__clip(w->polys, src, m, j * PG_MAX_POLYGON_VERTICES + k, w->scratch[which]);
-            src = w->scratch[which];
+            m = pg__clip(w->polys, w->buf[which ^ 1], m, subset[t] * PG_MAX_POLYGON_VERTICES + k, w->buf[which]);
             which ^= 1;
         }
-        if (m < 3) continue;
-        for (i = 0; i < m; ++i) w->pts[i] = src[i].p;
-        x = pg__poly_cross_sum(w->pts, m);
-        if (pg__big_sign(&x) <= 0) continue; /* zero area: so are all supersets */
-        pg__poly_moments(w->pts, m, &g);
-        /* S gains j: the sign flips, and j = max(S) gives the density */
-        pg__moments_add(&w->acc->mass, &g, -sign * pj->rho);
-        pg__moments_add(&w->acc->area, &g, -sign);
-        if (j + 1 < w->np) { /* depth + 1 <= j < np <= PG__MASS_MAX_OVERLAP */
-            for (i = 0; i < m; ++i) w->level[depth + 1][i] = src[i];
-            pg__overlap_dfs(w, depth + 1, m, j, -sign);
+    }
+    *out = w->buf[which ^ 1];
+    return m;
+}
+
+/* Adds the intersection of every subset of two or more of the np polygons, with weight
+ * (-1)^(|S|-1) rho_max(S), depth first in index order: a subset's supersets are visited
+ * only when its intersection has area. Iterative, so the stack does not grow with the
+ * depth. */
+PG__OUT_OF_LINE static void pg__add_overlaps(pg__mass_work *w, int np, pg__acc *acc)
+{
+    int subset[PG__MASS_MAX_OVERLAP], next[PG__MASS_MAX_OVERLAP], k, i;
+    for (k = 0; k < np - 1; ++k) {
+        int depth = 0;
+        subset[0] = k;
+        next[0] = k + 1;
+        while (depth >= 0) {
+            /* sign = (-1)^(|S|-1) for S = subset[0..depth]; S gains j, so the sign flips */
+            int64_t sign = (depth & 1) ? -1 : 1;
+            const pg__cv *v;
+            pg__moments g;
+            pg__big x;
+            int j = next[depth]++, m;
+            if (j >= np) {
+                --depth;
+                continue;
+            }
+            subset[depth + 1] = j;
+            m = pg__intersect(w, subset, depth + 2, &v);
+            if (m < 3) continue;
+            for (i = 0; i < m; ++i) w->pts[i] = v[i].p;
+            x = pg__poly_cross_sum(w->pts, m);
+            if (pg__big_sign(&x) <= 0) continue; /* zero area: so are all supersets */
+            pg__poly_moments(w->pts, m, &g);
+            /* j = max(S + j) gives the density */
+            pg__moments_add(&acc->mass, &g, -sign * w->polys[j].rho);
+            pg__moments_add(&acc->area, &g, -sign);
+            if (j + 1 < np) { /* depth + 1 <= j < np <= PG__MASS_MAX_OVERLAP */
+                ++depth;
+                next[depth] = j + 1;
+            }
         }
     }
 }
 
-pg_mass_data pg_compound_mass(const pg_geom *const *geoms, const pg_fix *densities, int count)
+/* The outputs from the accumulated moments about O = (ox, oy), each rounded once; the
+ * fallback centre fbx, fby (sums of vertex averages times 840 over `valid` geometries)
+ * when there is neither mass nor area. */
+PG__OUT_OF_LINE static pg_mass_data pg__mass_result(const pg__acc *acc, int64_t ox, int64_t oy, pg__big fbx, pg__big fby, int valid)
 {
     pg_mass_data md;
-    pg__acc acc;
-    pg__poly polys[PG__MASS_MAX_OVERLAP];
+    md.inertia = 0;
+    md.mass = pg__big_div_round(acc->mass.m0, pg__big_shl(pg__big_i64(3), 112));
+    md.area = pg__big_div_round(acc->area.m0, pg__big_shl(pg__big_i64(3), 96));
+    if (md.mass < 0) md.mass = 0;
+    if (md.area < 0) md.area = 0;
+    {
+        const pg__moments *w = pg__big_sign(&acc->mass.m0) > 0 ? &acc->mass
+                             : pg__big_sign(&acc->area.m0) > 0 ? &acc->area : NULL;
+        int64_t cx, cy;
+        if (w != NULL) {
+            pg__big den = pg__big_shl(w->m0, 16);
+            cx = pg__big_div_round(pg__big_add(pg__big_mul_i64(den, ox), w->m1x), den);
+            cy = pg__big_div_round(pg__big_add(pg__big_mul_i64(den, oy), w->m1y), den);
+        } else {
+            pg__big den = pg__big_i64(840 * (int64_t)valid);
+            cx = pg__big_div_round(fbx, den);
+            cy = pg__big_div_round(fby, den);
+        }
+        md.center = pg_v2(pg__sat64(cx), pg__sat64(cy));
+        if (w == &acc->mass) {
+            int64_t dx = ((int64_t)md.center.x - ox) * 65536, dy = ((int64_t)md.center.y - oy) * 65536;
+            pg__big in = acc->mass.m2;
+            pg__big m1d = pg__big_add(pg__big_mul_i64(acc->mass.m1x, dx), pg__big_mul_i64(acc->mass.m1y, dy));
+            in = pg__big_sub(in, pg__big_shl(m1d, 1));
+            in = pg__big_add(in, pg__big_mul(acc->mass.m0, pg__big_add(pg__big_mul2(dx, dx), pg__big_mul2(dy, dy))));
+            md.inertia = pg__big_div_round(in, pg__big_shl(pg__big_i64(3), 172));
+            if (md.inertia < 0) md.inertia = 0;
+        }
+    }
+    return md;
+}
+
+/* Adds geometry g (1..8 vertices) at density rho >= 0 to acc, its vertices taken
+ * relative to O = (ox, oy). A polygon is also copied, counter-clockwise, into *keep when
+ * keep is not NULL, for the overlap search; returns 1 for a polygon, else 0. Out of
+ * line, so that its vertices and moments are on the stack only while it runs. */
+PG__OUT_OF_LINE static int pg__geom_add(const pg_geom *g, int64_t rho, int64_t ox, int64_t oy, pg__poly *keep, pg__acc *acc)
+{
+    pg__pt v[PG_MAX_POLYGON_VERTICES];
+    pg__moments m;
+    int i, polygon = g->count >= 3;
+    for (i = 0; i < g->count; ++i) {
+        v[i].x = ((int64_t)g->vertices[i].x - ox) * 65536;
+        v[i].y = ((int64_t)g->vertices[i].y - oy) * 65536;
+    }
+    if (polygon) {
+        pg__big x = pg__poly_cross_sum(v, g->count);
+        if (pg__big_is_neg(&x)) { /* clockwise: reverse */
+            for (i = 0; i < g->count / 2; ++i) {
+                pg__pt t = v[i];
+                v[i] = v[g->count - 1 - i];
+                v[g->count - 1 - i] = t;
+            }
+        }
+        pg__poly_moments(v, g->count, &m);
+        if (keep != NULL) {
+            for (i = 0; i < g->count; ++i) keep->v[i] = v[i];
+            keep->n = g->count;
+            keep->rho = rho;
+        }
+    } else {
+        int64_t r = g->radius > 0 ? (int64_t)g->radius * 65536 : 0;
+        if (r == 0) return 0; /* segment or point: no area */
+        pg__capsule_moments(v[0], v[g->count - 1], r, &m);
+    }
+    pg__moments_add(&acc->mass, &m, rho);
+    pg__moments_add(&acc->area, &m, 1);
+    return polygon;
+}
+
+pg_mass_data pg_compound_mass(const pg_geom *const *geoms, const pg_fix *densities, int count, void *work)
+{
+    pg_mass_data md;
+    pg__mass_work *mw = (pg__mass_work *)work;
+    pg__acc *acc = &mw->acc;
     int np = 0, k, i, valid = 0, any = 0;
     int64_t lox = 0, hix = 0, loy = 0, hiy = 0, ox, oy;
     pg__big fbx = pg__big_i64(0), fby = pg__big_i64(0);
@@ -514,18 +675,14 @@ pg_mass_data pg_compound_mass(const pg_geom *const *geoms, const pg_fix *densiti
     ox = pg__round_shift64(lox + hix, 1);
     oy = pg__round_shift64(loy + hiy, 1);
 
-    pg__moments_zero(&acc.mass);
-    pg__moments_zero(&acc.area);
+    pg__moments_zero(&acc->mass);
+    pg__moments_zero(&acc->area);
     for (k = 0; k < count; ++k) {
         const pg_geom *g = geoms[k];
-        int64_t rho, sx = 0, sy = 0;
-        pg__pt v[PG_MAX_POLYGON_VERTICES];
-        pg__moments m;
+        int64_t sx = 0, sy = 0;
+        pg__poly *keep = np < PG__MASS_MAX_OVERLAP ? &mw->polys[np] : NULL;
         if (g == NULL || g->count < 1 || g->count > PG_MAX_POLYGON_VERTICES) continue;
-        rho = densities[k] > 0 ? densities[k] : 0;
         for (i = 0; i < g->count; ++i) {
-            v[i].x = ((int64_t)g->vertices[i].x - ox) * 65536;
-            v[i].y = ((int64_t)g->vertices[i].y - oy) * 65536;
             sx += g->vertices[i].x;
             sy += g->vertices[i].y;
         }
@@ -533,79 +690,18 @@ pg_mass_data pg_compound_mass(const pg_geom *const *geoms, const pg_fix *densiti
         fbx = pg__big_add(fbx, pg__big_i64(sx * (840 / g->count)));
         fby = pg__big_add(fby, pg__big_i64(sy * (840 / g->count)));
         ++valid;
-        if (g->count >= 3) {
-            pg__big x = pg__poly_cross_sum(v, g->count);
-            if (pg__big_is_neg(&x)) { /* clockwise: reverse */
-                for (i = 0; i < g->count / 2; ++i) {
-                    pg__pt t = v[i];
-                    v[i] = v[g->count - 1 - i];
-                    v[g->count - 1 - i] = t;
-                }
-            }
-            pg__poly_moments(v, g->count, &m);
-            if (np < PG__MASS_MAX_OVERLAP) {
-                for (i = 0; i < g->count; ++i) polys[np].v[i] = v[i];
-                polys[np].n = g->count;
-                polys[np].rho = rho;
-                ++np;
-            }
-        } else {
-            int64_t r = g->radius > 0 ? (int64_t)g->radius * 65536 : 0;
-            if (r == 0) continue; /* segment or point: no area */
-            pg__capsule_moments(v[0], v[g->count - 1], r, &m);
-        }
-        pg__moments_add(&acc.mass, &m, rho);
-        pg__moments_add(&acc.area, &m, 1);
+        if (pg__geom_add(g, densities[k] > 0 ? densities[k] : 0, ox, oy, keep, acc) && keep != NULL) ++np;
     }
     /* overlaps among the first polygons: subsets of two or more */
-    if (np > 1) {
-        pg__overlap w;
-        w.polys = polys;
-        w.np = np;
-        w.acc = &acc;
-        for (k = 0; k < np - 1; ++k) {
-            for (i = 0; i < polys[k].n; ++i) {
-                w.level[0][i].p = polys[k].v[i];
-                w.level[0][i].line = k * PG_MAX_POLYGON_VERTICES + i;
-            }
-            pg__overlap_dfs(&w, 0, polys[k].n, k, 1);
-        }
-    }
+    if (np > 1) pg__add_overlaps(mw, np, acc);
 
-    md.mass = pg__big_div_round(acc.mass.m0, pg__big_shl(pg__big_i64(3), 112));
-    md.area = pg__big_div_round(acc.area.m0, pg__big_shl(pg__big_i64(3), 96));
-    if (md.mass < 0) md.mass = 0;
-    if (md.area < 0) md.area = 0;
-    {
-        const pg__moments *w = pg__big_sign(&acc.mass.m0) > 0 ? &acc.mass
-                             : pg__big_sign(&acc.area.m0) > 0 ? &acc.area : NULL;
-        int64_t cx, cy;
-        if (w != NULL) {
-            pg__big den = pg__big_shl(w->m0, 16);
-            cx = pg__big_div_round(pg__big_add(pg__big_mul_i64(den, ox), w->m1x), den);
-            cy = pg__big_div_round(pg__big_add(pg__big_mul_i64(den, oy), w->m1y), den);
-        } else {
-            pg__big den = pg__big_i64(840 * (int64_t)valid);
-            cx = pg__big_div_round(fbx, den);
-            cy = pg__big_div_round(fby, den);
-        }
-        md.center = pg_v2(pg__sat64(cx), pg__sat64(cy));
-        if (w == &acc.mass) {
-            int64_t dx = ((int64_t)md.center.x - ox) * 65536, dy = ((int64_t)md.center.y - oy) * 65536;
-            pg__big in = acc.mass.m2;
-            pg__big m1d = pg__big_add(pg__big_mul_i64(acc.mass.m1x, dx), pg__big_mul_i64(acc.mass.m1y, dy));
-            in = pg__big_sub(in, pg__big_shl(m1d, 1));
-            in = pg__big_add(in, pg__big_mul(acc.mass.m0, pg__big_add(pg__big_mul2(dx, dx), pg__big_mul2(dy, dy))));
-            md.inertia = pg__big_div_round(in, pg__big_shl(pg__big_i64(3), 172));
-            if (md.inertia < 0) md.inertia = 0;
-        }
-    }
-    return md;
+    return pg__mass_result(acc, ox, oy, fbx, fby, valid);
 }
 
 pg_mass_data pg_geom_mass(const pg_geom *g, pg_fix density)
 {
     const pg_geom *one[1];
+    pg__mass_work work; /* on the stack: for tests and tools, the library does not call this */
     one[0] = g;
-    return pg_compound_mass(one, &density, 1);
+    return pg_compound_mass(one, &density, 1, &work);
 }

@@ -20,14 +20,24 @@ typedef struct pg_mass_data {
 } pg_mass_data;
 
 /* Mass data of one convex geometry (circle, capsule, segment (zero area), polygon)
- * at a density. Exact for every kind: a capsule is a rectangle plus one full disc. */
+ * at a density. Exact for every kind: a capsule is a rectangle plus one full disc.
+ * Its work space is on the stack (about 6 KiB): for tests and tools. */
 pg_mass_data pg_geom_mass(const pg_geom *g, pg_fix density);
+
+/* Bytes of the work space pg_compound_mass needs (the polygons whose overlaps it
+ * measures, and clipping buffers): a few KiB, which a caller takes from memory it owns
+ * (the world's scratch) rather than from the stack. */
+size_t pg__mass_work_bytes(void);
+/* An upper bound of pg__mass_work_bytes() for a buffer declared at compile time (mass.c
+ * checks it). */
+#define PG__MASS_WORK_BYTES 6144u
 
 /* Mass data of a compound of `count` geometries (in one frame) with their densities,
  * combined with the parallel axis theorem. Regions where polygons (count >= 3)
  * overlap are counted once, with the density of the lowest-indexed polygon covering
  * them (inclusion-exclusion over the convex intersections). Circles, capsules and
- * segments are assumed not to overlap other shapes. */
-pg_mass_data pg_compound_mass(const pg_geom *const *geoms, const pg_fix *densities, int count);
+ * segments are assumed not to overlap other shapes. `work`: pg__mass_work_bytes() bytes
+ * aligned to 8, whose contents do not matter. */
+pg_mass_data pg_compound_mass(const pg_geom *const *geoms, const pg_fix *densities, int count, void *work);
 
 #endif

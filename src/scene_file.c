@@ -21,6 +21,7 @@
 #include "decompose.h"
 #include "intmath.h"
 #include "joint_pool.h"
+#include "mass.h"
 #include "text.h"
 #include "world_internal.h"
 
@@ -837,7 +838,7 @@ static void apply_awake(pg_world *world, pg_body_id id, int awake)
         b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
         return;
     }
-    if ((world->def.effects & PG_EFFECT_SLEEPING) == 0) return; /* nothing sleeps without sleeping */
+    if ((world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) == 0) return; /* nothing sleeps without sleeping */
     b->flags &= ~(uint32_t)PG_BODY_FLAG_AWAKE;
     b->v = pg_v2_zero();
     b->w = 0;
@@ -897,12 +898,13 @@ static pg_result count_objects(scene_parser *P, uint32_t bodies, uint32_t shapes
 static const char *mass_problem(scene_parser *P, uint32_t n, const pg_geometry *g, pg_fix density, int rotates)
 {
     const pg_geom *geoms[64];
+    uint64_t work[PG__MASS_WORK_BYTES / 8u]; /* no world to lend its scratch when reading */
     uint32_t i;
     if (n >= 64) return NULL; /* refused before: a body has at most 64 shapes */
     pg__shape_build_local(g, &P->mass_geoms[n]);
     P->mass_densities[n] = density;
     for (i = 0; i <= n; ++i) geoms[i] = &P->mass_geoms[i];
-    return pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, (int)n + 1), rotates);
+    return pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, (int)n + 1, work), rotates);
 }
 
 /* "cannot make the <kind>: <why>" as PG_ERR_ENVELOPE at `column` of the current line. */
@@ -1046,9 +1048,10 @@ static pg_result parse_concave(scene_parser *P, token keyword)
     }
     if (P->mode == MODE_READ && pr.bd.type == PG_BODY_DYNAMIC) {
         const pg_geom *geoms[PG_CONCAVE_MAX_PIECES];
+        uint64_t work[PG__MASS_WORK_BYTES / 8u]; /* no world to lend its scratch when reading */
         const char *problem;
         for (k = 0; k < d.count; ++k) geoms[k] = &P->mass_geoms[k];
-        problem = pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, d.count), !pr.bd.fixed_rotation);
+        problem = pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, d.count, work), !pr.bd.fixed_rotation);
         if (problem != NULL) return fail_mass(P, column, "concave polygon", problem);
     }
     r = count_objects(P, 1, (uint32_t)d.count);

@@ -446,6 +446,26 @@ pg_result pg_shape_geometry(const pg_world *world, pg_shape_id id, pg_geometry *
 }
 
 /* ---- the six kinds ------------------------------------------------------------------------------ */
+/* What pg__mass_data_problem finds in a new dynamic body of the first n (<= 2) shapes
+ * g. Out of line: its two geometries would otherwise sit in make_body's frame below
+ * everything it calls (docs/embedded.md, stack). */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static const char *first_shapes_mass_problem(pg_world *w, const pg_geometry *g, int n, pg_fix density, int rotates)
+{
+    pg_geom locals[2];
+    const pg_geom *ptrs[2];
+    pg_fix dens[2];
+    int i;
+    for (i = 0; i < n; ++i) {
+        pg__shape_build_local(&g[i], &locals[i]);
+        ptrs[i] = &locals[i];
+        dens[i] = density;
+    }
+    return pg__mass_data_problem(pg_compound_mass(ptrs, dens, n, pg__body_mass_work(w)), rotates);
+}
+
 static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, const pg_geometry *g, int n, pg_body_id *out)
 {
     pg_body_id id;
@@ -468,17 +488,7 @@ static pg_result make_body(pg_world *w, const pg_body_def *bd, const pg_shape_de
         for (i = 0; i < n; ++i)
             if (pg__geometry_reach(&g[i]) > pg__body_reach_limit(bd->type)) return pg__fail_reach(w, pg__geometry_reach(&g[i]), bd->type);
         if (bd->type == PG_BODY_DYNAMIC) {
-            pg_geom locals[2];
-            const pg_geom *ptrs[2];
-            pg_fix dens[2];
-            pg_mass_data md;
-            for (i = 0; i < n && i < 2; ++i) {
-                pg__shape_build_local(&g[i], &locals[i]);
-                ptrs[i] = &locals[i];
-                dens[i] = sd->density;
-            }
-            md = pg_compound_mass(ptrs, dens, n < 2 ? n : 2);
-            why = pg__mass_data_problem(md, !bd->fixed_rotation);
+            why = first_shapes_mass_problem(w, g, n < 2 ? n : 2, sd->density, !bd->fixed_rotation);
             if (why != NULL) return pg__fail(w, PG_ERR_ENVELOPE, why);
         }
     }

@@ -185,7 +185,7 @@ void pg__solve(pg_world *w)
     pg_joint_stage joints;
     int have_joints;
     const uint32_t effects = w->def.effects;
-    const int rotation = (effects & PG_EFFECT_ROTATION) != 0;
+    const int rotation = (effects & PG__EFFECT(PG_EFFECT_ROTATION)) != 0;
 
     ctx.n = w->def.step_hz * w->def.substeps;
     ctx.h_q32 = (int64_t)(((UINT64_C(1) << 32) + ctx.n / 2u) / ctx.n);
@@ -198,7 +198,7 @@ void pg__solve(pg_world *w)
     ctx.sub = 0;
     ctx.deep_seen = NULL; /* the contacts' prepare stage points it at their flag */
     /* a body of gravity scale 1 and no force gets exactly this (pg_fix_mul by 1 is exact) */
-    ctx.gravity = (effects & PG_EFFECT_GRAVITY) != 0 ? w->def.gravity : pg_v2_zero();
+    ctx.gravity = (effects & PG__EFFECT(PG_EFFECT_GRAVITY)) != 0 ? w->def.gravity : pg_v2_zero();
 
     /* the dummy static body */
     {
@@ -249,7 +249,7 @@ void pg__solve(pg_world *w)
         if (b->type != PG_BODY_DYNAMIC) continue;
         {
             int64_t ax = 0, ay = 0, alpha = 0;
-            if ((effects & PG_EFFECT_GRAVITY) != 0 && b->gravity_scale != 0) {
+            if ((effects & PG__EFFECT(PG_EFFECT_GRAVITY)) != 0 && b->gravity_scale != 0) {
                 ax = pg_fix_mul(w->def.gravity.x, b->gravity_scale);
                 ay = pg_fix_mul(w->def.gravity.y, b->gravity_scale);
             }
@@ -266,7 +266,7 @@ void pg__solve(pg_world *w)
             sb->accel = pg_v2(pg__sat64(ax), pg__sat64(ay));
             sb->alpha = pg__sat64(alpha);
         }
-        if ((effects & PG_EFFECT_DAMPING) != 0) {
+        if ((effects & PG__EFFECT(PG_EFFECT_DAMPING)) != 0) {
             /* v *= 1 / (1 + h c) per substep */
             int64_t N = (int64_t)ctx.n * 65536;
             if (b->linear_damping > 0) sb->lin_damp = (int32_t)(((INT64_C(1) << 30) * N + (N + b->linear_damping) / 2) / (N + b->linear_damping));
@@ -296,7 +296,7 @@ void pg__solve(pg_world *w)
 
     /* write back, and the sweeps of bodies that turned too far for their speculative
      * contacts (continuous.c) */
-    sweeping = rotation && (effects & PG_EFFECT_CONTINUOUS) != 0;
+    sweeping = rotation && (effects & PG__EFFECT(PG_EFFECT_CONTINUOUS)) != 0;
     for (i = 0; i < n_active; ++i) {
         pg_body *b = &w->bodies[active[i]];
         const solver_body *sb = &bodies[active[i]];

@@ -7,15 +7,19 @@
 #include "island.h"
 #include "solver.h"
 #include "world_types.h"
+#include "world_internal.h"
 
 /* ---- definition and memory ------------------------------------------------------------ */
+/* An effect this build was compiled without (pogon/config.h) cannot be turned on. */
+#define LEFT_OUT_EFFECT "effects has an effect this build leaves out (PG_CONFIG_EFFECTS in pogon/config.h): build the library with it, or clear its PG_EFFECT_* bit"
+
 pg_world_def pg_default_world_def(void)
 {
     pg_world_def d;
     d.gravity = pg_v2(0, PG_FIX_C(-10));
     d.step_hz = 60;
     d.substeps = 4;
-    d.effects = PG_EFFECTS_ALL;
+    d.effects = PG_EFFECTS_ALL & PG_CONFIG_EFFECTS; /* what this build has */
     d.contact_hertz = PG_FIX_C(30);
     d.contact_damping_ratio = PG_FIX_C(10);
     d.contact_push_max = PG_FIX_C(3);
@@ -41,6 +45,7 @@ static const char *check_def(const pg_world_def *d)
     if (d->step_hz < 1 || d->step_hz > 1000) return "step_hz must be 1..1000";
     if (d->substeps < 1 || d->substeps > 16) return "substeps must be 1..16";
     if ((d->effects & ~PG_EFFECTS_ALL) != 0) return "effects has bits that are not PG_EFFECT_*";
+    if ((d->effects & ~PG_CONFIG_EFFECTS) != 0) return LEFT_OUT_EFFECT;
     if (d->max_bodies < 1 || d->max_bodies > PG_MAX_CAPACITY) return "max_bodies must be 1..2^24";
     if (d->max_shapes < 1 || d->max_shapes > PG_MAX_CAPACITY) return "max_shapes must be 1..2^24";
     if (d->max_contacts < 1 || d->max_contacts > PG_MAX_CAPACITY) return "max_contacts must be 1..2^24";
@@ -57,10 +62,13 @@ static const char *check_def(const pg_world_def *d)
 }
 
 typedef struct layout {
-    size_t world, bodies, shapes, joints, contacts, contacts_next, geoms, boxes, flags, pboxes, pflags, pshape, pairs, bp, solver, island, begin, end, total;
+    size_t world, bodies, shapes, joints, contacts, contacts_next, geoms, boxes, flags, pboxes, pflags, pshape, pairs, scratch, island, begin, end,
+        total;
 } layout;
 
 static size_t align8(size_t n) { return (n + 7u) & ~(size_t)7u; }
+
+static size_t max3(size_t a, size_t b, size_t c) { return a > b ? (a > c ? a : c) : (b > c ? b : c); }
 
 static layout compute_layout(const pg_world_def *d)
 {
@@ -81,8 +89,12 @@ static layout compute_layout(const pg_world_def *d)
     PLACE(pflags, d->max_shapes);
     PLACE(pshape, sizeof(uint32_t) * d->max_shapes);
     PLACE(pairs, sizeof(pg_pair) * pair_capacity);
-    PLACE(bp, pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity));
-    PLACE(solver, pg__solver_scratch_bytes(d));
+    /* One scratch area for the stages that never hold it at the same time: the
+     * broadphase (its output is the pairs above), then the solver and after it the
+     * islands, and between steps the mass of a body being changed (body.h) or the check
+     * of a snapshot being restored. */
+    PLACE(scratch, max3(pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity), pg__solver_scratch_bytes(d),
+                        pg__body_mass_scratch_bytes()));
     PLACE(island, sizeof(uint32_t) * d->max_bodies);
     PLACE(begin, sizeof(pg_contact_event) * d->max_contacts);
     PLACE(end, sizeof(pg_contact_event) * d->max_contacts);
@@ -100,6 +112,25 @@ size_t pg_world_memory_size(const pg_world_def *def)
 {
     if (def == NULL || check_def(def) != NULL) return 0;
     return compute_layout(def).total;
+}
+
+const char *pg__world_memory_part(const pg_world_def *def, unsigned i, size_t *bytes)
+{
+    static const char *const names[] = {"world", "bodies", "shapes", "joints", "contacts", "contacts (next step)",
+                                        "world geometries", "boxes", "proxy flags", "proxy boxes",
+                                        "proxy flags (compact)", "proxy shapes", "pairs",
+                                        "scratch (broadphase / solver / mass)", "island parents",
+                                        "begin events", "end events"};
+    layout l;
+    size_t at[sizeof names / sizeof names[0] + 1];
+    *bytes = 0;
+    if (def == NULL || check_def(def) != NULL || i >= sizeof names / sizeof names[0]) return NULL;
+    l = compute_layout(def);
+    at[0] = l.world; at[1] = l.bodies; at[2] = l.shapes; at[3] = l.joints; at[4] = l.contacts; at[5] = l.contacts_next;
+    at[6] = l.geoms; at[7] = l.boxes; at[8] = l.flags; at[9] = l.pboxes; at[10] = l.pflags; at[11] = l.pshape;
+    at[12] = l.pairs; at[13] = l.scratch; at[14] = l.island; at[15] = l.begin; at[16] = l.end; at[17] = l.total;
+    *bytes = at[i + 1] - at[i];
+    return names[i];
 }
 
 pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_size, pg_world **out)
@@ -132,10 +163,10 @@ pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_s
     w->proxy_shape = (uint32_t *)(void *)(m + l.pshape);
     w->pairs = (pg_pair *)(void *)(m + l.pairs);
     w->pair_capacity = def->max_contacts;
-    w->broadphase_scratch = m + l.bp;
-    w->broadphase_scratch_bytes = l.solver - l.bp;
-    w->solver_scratch = m + l.solver;
-    w->solver_scratch_bytes = l.island - l.solver;
+    w->broadphase_scratch = m + l.scratch;
+    w->broadphase_scratch_bytes = l.island - l.scratch;
+    w->solver_scratch = m + l.scratch; /* the same area: see compute_layout */
+    w->solver_scratch_bytes = l.island - l.scratch;
     w->island_parent = (uint32_t *)(void *)(m + l.island);
     w->begin_events = (pg_contact_event *)(void *)(m + l.begin);
     w->end_events = (pg_contact_event *)(void *)(m + l.end);
@@ -164,7 +195,8 @@ pg_result pg_world_set_effects(pg_world *world, uint32_t effects)
     uint32_t i;
     if (world == NULL) return PG_ERR_NULL;
     if ((effects & ~PG_EFFECTS_ALL) != 0) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "effects has bits that are not PG_EFFECT_*");
-    if ((world->def.effects & PG_EFFECT_SLEEPING) != 0 && (effects & PG_EFFECT_SLEEPING) == 0) {
+    if ((effects & ~PG_CONFIG_EFFECTS) != 0) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, LEFT_OUT_EFFECT);
+    if ((world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) != 0 && (effects & PG__EFFECT(PG_EFFECT_SLEEPING)) == 0) {
         for (i = 0; i < world->body_high; ++i) /* without sleeping, nothing may stay asleep */
             if ((world->bodies[i].flags & PG_BODY_FLAG_USED) != 0 && world->bodies[i].type != PG_BODY_STATIC) {
                 world->bodies[i].flags |= PG_BODY_FLAG_AWAKE;
@@ -241,7 +273,7 @@ pg_result pg_world_step(pg_world *world)
     /* 3. forces, solver, integration */
     pg__solve(world);
     /* 4. islands and sleep */
-    if ((world->def.effects & PG_EFFECT_SLEEPING) != 0) pg__update_sleep(world);
+    if ((world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) != 0) pg__update_sleep(world);
     world->frame += 1u;
     return PG_OK;
 }

@@ -23,4 +23,9 @@
 #include "shape.h"
 #include "solver.h"
 #include "world_types.h"
+
+/* The parts of a world's memory block for `def` (world.c): the name of part i and, in
+ * *bytes, its size with alignment; NULL (and 0) past the last part or for a def
+ * pg_world_memory_size refuses. For tools/size (docs/embedded.md's RAM table). */
+const char *pg__world_memory_part(const pg_world_def *def, unsigned i, size_t *bytes);
 #endif

@@ -18,6 +18,12 @@
 #include "joint_types.h"
 #include "shape_types.h"
 
+/* An effect bit as the step tests it: 0 when the build leaves the effect out
+ * (PG_CONFIG_EFFECTS, pogon/config.h), so the test folds to a constant and the effect's
+ * code drops out of the program. A world's effects never hold such a bit (world.c
+ * refuses it), so in a build that keeps the effect nothing changes. */
+#define PG__EFFECT(bit) ((uint32_t)(bit) & (uint32_t)(PG_CONFIG_EFFECTS))
+
 struct pg_world {
     pg_world_def def;
     uint64_t frame;
@@ -43,8 +49,8 @@ struct pg_world {
     uint32_t *proxy_shape;     /* proxy -> shape slot */
     pg_pair *pairs;
     uint32_t pair_capacity;
-    void *broadphase_scratch;
-    size_t broadphase_scratch_bytes;
+    void *broadphase_scratch;  /* the broadphase's and the solver's scratch are one */
+    size_t broadphase_scratch_bytes; /* area (world.c compute_layout): never live at once */
     void *solver_scratch;
     size_t solver_scratch_bytes;
     uint32_t *island_parent;   /* per body slot */

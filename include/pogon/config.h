@@ -36,6 +36,22 @@
 #error "PG_FAST_DIV64 must be 0 or 1"
 #endif
 
+/** The effects (PG_EFFECT_* bits of pogon.h, here as numbers) the library is built with;
+ * default 0x7F, all of them. An effect left out has no code in the library: the step's
+ * tests of its bit fold to constants, and --gc-sections drops what only it calls. For
+ * example 0x1F keeps gravity, rotation, friction, restitution and damping and leaves out
+ * sleeping (0x20) and continuous collision (0x40). Such a build refuses a world
+ * definition or a pg_world_set_effects call that turns a left-out effect on
+ * (PG_ERR_INVALID_ARGUMENT, with a message naming this switch), and
+ * pg_default_world_def leaves it out of its effects. The effects it keeps step exactly
+ * as in the full build (docs/modules.md). */
+#ifndef PG_CONFIG_EFFECTS
+#define PG_CONFIG_EFFECTS 0x7Fu
+#endif
+#if ((PG_CONFIG_EFFECTS) & ~0x7Fu) != 0
+#error "PG_CONFIG_EFFECTS must be a combination of the PG_EFFECT_* bits (0x00 .. 0x7F)"
+#endif
+
 /** @name Numeric configuration
  * The switches above that change results, packed into one 32-bit value: replay files
  * and snapshots record it, and a file of another configuration is refused on load with

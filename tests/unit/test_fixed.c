@@ -584,6 +584,42 @@ static void test_isqrt64(void **state)
 
 /* ---- status messages --------------------------------------------------------------------- */
 
+/* pg__udiv64_32 (intmath.h) is floor(n / d) exactly: at the edges of both operands and
+ * for random operands of every bit length (the solver's reciprocals use it in place of
+ * a 64-bit division, which must not change a bit). */
+static void check_udiv64_32(uint64_t n, uint32_t d)
+{
+    uint64_t q = pg__udiv64_32(n, d);
+    if (q != n / d) fail_msg("pg__udiv64_32(%llu, %lu) = %llu, want %llu", (unsigned long long)n, (unsigned long)d,
+                             (unsigned long long)q, (unsigned long long)(n / d));
+}
+
+static void test_udiv64_32(void **state)
+{
+    static const uint64_t ns[] = {0, 1, 2, 0xFFFFu, 0x10000u, 0xFFFFFFFFu, UINT64_C(0x100000000), UINT64_C(0x7FFFFFFFFFFFFFFF),
+                                  UINT64_C(0x8000000000000000), UINT64_C(0xFFFFFFFFFFFFFFFF), UINT64_C(0xFFFFFFFF00000000),
+                                  UINT64_C(0x4000000020000000), UINT64_C(0x00007FFFFFFF8000)};
+    static const uint32_t ds[] = {1, 2, 3, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u, 0x80000001u,
+                                  0xFFFFFFFFu, 0x40000000u, 0x7FFF8001u};
+    pgt_rng r = pgt_rng_seed(21);
+    size_t i, j;
+    int k;
+    (void)state;
+    for (i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+        for (j = 0; j < sizeof ds / sizeof ds[0]; ++j) {
+            check_udiv64_32(ns[i], ds[j]);
+            check_udiv64_32(ns[i] - (ns[i] > 0), ds[j]);
+            check_udiv64_32((uint64_t)ds[j] * (ns[i] & 0xFFFFFFFFu), ds[j]); /* exact multiples */
+            check_udiv64_32((uint64_t)ds[j] * (ns[i] & 0xFFFFFFFFu) + ds[j] - 1u, ds[j]);
+        }
+    for (k = 0; k < 2000000; ++k) {
+        uint64_t n = pgt_next(&r) >> pgt_below(&r, 64);
+        uint32_t d = (uint32_t)(pgt_next(&r) >> (32 + pgt_below(&r, 32)));
+        if (d == 0) d = 1;
+        check_udiv64_32(n, d);
+    }
+}
+
 static void test_status_messages(void **state)
 {
     static const struct { pg_fix_status st; const char *name; } names[] = {
@@ -1037,6 +1073,7 @@ int main(void)
         cmocka_unit_test(test_sqrt),
         cmocka_unit_test(test_isqrt64_seed_nodes),
         cmocka_unit_test(test_isqrt64),
+        cmocka_unit_test(test_udiv64_32),
         cmocka_unit_test(test_status_messages),
         cmocka_unit_test(test_format_exact),
         cmocka_unit_test(test_format_roundtrip),

@@ -39,6 +39,9 @@ typedef long double ld;
 #define Q36 68719476736.0L
 #define Q16 65536.0L
 
+/* pg_compound_mass's work space (mass.h), which a world lends from its scratch */
+static uint64_t mass_work[PG__MASS_WORK_BYTES / 8u];
+
 static pg_fix fx(double v) { return (pg_fix)llround(v * 65536.0); }
 static ld fd(pg_fix v) { return (ld)v / Q16; }
 
@@ -353,7 +356,7 @@ static void test_compound_separate(void **state)
     pg_geom a = box(0, 0, 1, 1), b = box(3, 0, 5, 2), c = circle(-2, 1, 0.5), s = capsule(0, 3, 2, 4, 0.25);
     const pg_geom *gs[4] = {&a, &b, &c, &s};
     pg_fix rho[4] = {fx(1.0), fx(2.0), fx(0.5), fx(4.0)};
-    pg_mass_data md = pg_compound_mass(gs, rho, 4);
+    pg_mass_data md = pg_compound_mass(gs, rho, 4, mass_work);
     ref m = ref_zero(), ar = ref_zero();
     for (int i = 0; i < 4; ++i) {
         ref r = ref_geom(gs[i], fd(md.center.x), fd(md.center.y));
@@ -362,7 +365,7 @@ static void test_compound_separate(void **state)
     }
     expect_md(&md, m, ar, EXACT, "four separate shapes");
     /* the parallel axis theorem spelled out for the two boxes alone */
-    md = pg_compound_mass(gs, rho, 2);
+    md = pg_compound_mass(gs, rho, 2, mass_work);
     {
         ld ma = 1, mb = 8, cx = (0.5L * ma + 4 * mb) / (ma + mb), cy = (0.5L * ma + 1 * mb) / (ma + mb);
         ld ia = ma * 2 / 12, ib = mb * 8 / 12;
@@ -385,7 +388,7 @@ static void test_compound_overlap_l_shape(void **state)
     {
         const pg_geom *gs[2] = {&a, &b};
         pg_fix rho[2] = {r1, r2};
-        pg_mass_data md = pg_compound_mass(gs, rho, 2);
+        pg_mass_data md = pg_compound_mass(gs, rho, 2, mass_work);
         ld cx = fd(md.center.x), cy = fd(md.center.y);
         ref m = ref_zero(), ar = ref_zero();
         ref_add(&m, ref_geom(&a, cx, cy), fd(r1));
@@ -400,7 +403,7 @@ static void test_compound_overlap_l_shape(void **state)
     {
         const pg_geom *gs[2] = {&b, &a};
         pg_fix rho[2] = {r2, r1};
-        pg_mass_data md = pg_compound_mass(gs, rho, 2);
+        pg_mass_data md = pg_compound_mass(gs, rho, 2, mass_work);
         ld cx = fd(md.center.x), cy = fd(md.center.y);
         ref m = ref_zero(), ar = ref_zero();
         ref_add(&m, ref_geom(&b, cx, cy), fd(r2));
@@ -414,7 +417,7 @@ static void test_compound_overlap_l_shape(void **state)
     {
         const pg_geom *ab[2] = {&a, &b}, *ba[2] = {&b, &a}, *lt[2] = {&a, &top};
         pg_fix rho[2] = {r2, r2};
-        pg_mass_data x = pg_compound_mass(ab, rho, 2), y = pg_compound_mass(ba, rho, 2), z = pg_compound_mass(lt, rho, 2);
+        pg_mass_data x = pg_compound_mass(ab, rho, 2, mass_work), y = pg_compound_mass(ba, rho, 2, mass_work), z = pg_compound_mass(lt, rho, 2, mass_work);
         expect_same(&x, &y, "L shape order");
         expect_same(&x, &z, "L shape vs its disjoint decomposition");
     }
@@ -428,7 +431,7 @@ static void test_compound_identical(void **state)
     pg_fix rho[9] = {fx(2.0), fx(5.0), fx(0.5), fx(1.0), fx(3.0), fx(7.0), fx(0.25), fx(9.0), fx(4.0)};
     pg_mass_data one = pg_geom_mass(&b, rho[0]);
     for (int n = 2; n <= 8; ++n) {
-        pg_mass_data md = pg_compound_mass(gs, rho, n);
+        pg_mass_data md = pg_compound_mass(gs, rho, n, mass_work);
         char what[64];
         snprintf(what, sizeof what, "%d identical boxes", n);
         expect_same(&md, &one, what); /* 2^n - 1 subsets, all the same box */
@@ -436,7 +439,7 @@ static void test_compound_identical(void **state)
     /* documented limit: only the first 8 polygons are overlap-checked; a ninth is added
      * as if it overlapped nothing */
     {
-        pg_mass_data md = pg_compound_mass(gs, rho, 9), ninth = pg_geom_mass(&b, rho[8]);
+        pg_mass_data md = pg_compound_mass(gs, rho, 9, mass_work), ninth = pg_geom_mass(&b, rho[8]);
         PG_EXPECT_EQ(md.mass, one.mass + ninth.mass, "%s", "ninth polygon counted separately");
         PG_EXPECT_EQ(md.area, 2 * one.area, "%s", "ninth polygon counted separately");
         PG_EXPECT_EQ(md.center.x, one.center.x, "%s", "same centre");
@@ -453,13 +456,13 @@ static void test_compound_nested(void **state)
     {
         const pg_geom *gs[3] = {&a, &b, &c};
         pg_fix rho[3] = {ra, rb, rc};
-        pg_mass_data md = pg_compound_mass(gs, rho, 3), just_a = pg_geom_mass(&a, ra);
+        pg_mass_data md = pg_compound_mass(gs, rho, 3, mass_work), just_a = pg_geom_mass(&a, ra);
         expect_same(&md, &just_a, "outer first");
     }
     {
         const pg_geom *gs[3] = {&c, &b, &a};
         pg_fix rho[3] = {rc, rb, ra};
-        pg_mass_data md = pg_compound_mass(gs, rho, 3);
+        pg_mass_data md = pg_compound_mass(gs, rho, 3, mass_work);
         ld cx = fd(md.center.x), cy = fd(md.center.y);
         ref ma = ref_geom(&a, cx, cy), mb = ref_geom(&b, cx, cy), mc = ref_geom(&c, cx, cy), m = ref_zero();
         ref_add(&m, mc, fd(rc));
@@ -558,7 +561,7 @@ static void check_star(double r, double cx, double cy, pg_fix density)
     star(r, cx, cy, &up, &down);
     const pg_geom *gs[2] = {&up, &down};
     pg_fix rho[2] = {density, density};
-    pg_mass_data md = pg_compound_mass(gs, rho, 2);
+    pg_mass_data md = pg_compound_mass(gs, rho, 2, mass_work);
     ld perim, r2, rhol = fd(density);
     ref a = hexagram_ref(&up, &down, fd(fx(cx)), fd(fx(cy)), fd(md.center.x), fd(md.center.y), &perim, &r2), m = ref_zero();
     ref_add(&m, a, rhol);
@@ -686,13 +689,13 @@ static void test_extremes(void **state)
         {
             const pg_geom *gs[3] = {&b, &b, &c};
             pg_fix rho[3] = {PG_FIX_MAX, 1, PG_FIX_MAX};
-            md = pg_compound_mass(gs, rho, 3);
+            md = pg_compound_mass(gs, rho, 3, mass_work);
             PG_EXPECT_EQ(md.inertia, INT64_MAX, "%s", "huge compound");
         }
     }
     /* degenerate calls */
     {
-        pg_mass_data md = pg_compound_mass(NULL, NULL, 0);
+        pg_mass_data md = pg_compound_mass(NULL, NULL, 0, mass_work);
         PG_EXPECT_EQ(md.mass, 0, "%s", "empty");
         pg_geom b = box(0, 0, 1, 1);
         md = pg_geom_mass(&b, fx(-2.0));
@@ -757,7 +760,7 @@ static void test_mirror_symmetry(void **state)
             ms[i] = &mg[i];
             rho[i] = (pg_fix)(1 + pgt_below(&rng, 10 << 16));
         }
-        pg_mass_data m = pg_compound_mass(gs, rho, 3), mm = pg_compound_mass(ms, rho, 3);
+        pg_mass_data m = pg_compound_mass(gs, rho, 3, mass_work), mm = pg_compound_mass(ms, rho, 3, mass_work);
         PG_EXPECT_EQ(mm.mass, m.mass, "compound it=%d", it);
         PG_EXPECT_EQ(mm.inertia, m.inertia, "compound it=%d", it);
         PG_EXPECT_EQ(mm.area, m.area, "compound it=%d", it);
@@ -828,7 +831,7 @@ static void check_compound_ref(const pg_geom *g, const pg_fix *rho, int n, const
 {
     const pg_geom *gs[4];
     for (int i = 0; i < n; ++i) gs[i] = &g[i];
-    pg_mass_data md = pg_compound_mass(gs, rho, n);
+    pg_mass_data md = pg_compound_mass(gs, rho, n, mass_work);
     ld cx = fd(md.center.x), cy = fd(md.center.y);
     ref m = ref_zero(), ar = ref_zero();
     ld move_area = 0, move_mass = 0, move_j = 0;
@@ -875,7 +878,7 @@ static void check_compound_ref(const pg_geom *g, const pg_fix *rho, int n, const
         const pg_geom *rev[4];
         pg_fix same[4];
         for (int i = 0; i < n; ++i) { rev[i] = gs[n - 1 - i]; same[i] = rho[0]; }
-        pg_mass_data x = pg_compound_mass(gs, same, n), y = pg_compound_mass(rev, same, n);
+        pg_mass_data x = pg_compound_mass(gs, same, n, mass_work), y = pg_compound_mass(rev, same, n, mass_work);
         expect_same(&x, &y, what);
     }
 }
@@ -928,12 +931,12 @@ static void test_zero_mass_centres(void **state)
     const pg_geom *gs[3] = {&s1, &s2, &b};
     pg_fix rho[3] = {fx(1.0), fx(1.0), 0};
     /* only segments: the mean of their midpoints (1, 0) and (4, 3) */
-    pg_mass_data md = pg_compound_mass(gs, rho, 2);
+    pg_mass_data md = pg_compound_mass(gs, rho, 2, mass_work);
     PG_EXPECT_EQ(md.center.x, fx(2.5), "%s", "segments only");
     PG_EXPECT_EQ(md.center.y, fx(1.5), "%s", "segments only");
     PG_EXPECT_EQ(md.mass, 0, "%s", "segments only");
     /* a massless box: the centroid of its area */
-    md = pg_compound_mass(gs, rho, 3);
+    md = pg_compound_mass(gs, rho, 3, mass_work);
     PG_EXPECT_EQ(md.mass, 0, "%s", "massless box");
     PG_EXPECT_EQ(md.inertia, 0, "%s", "massless box");
     PG_EXPECT_EQ(md.area, INT64_C(8) << 32, "%s", "massless box");

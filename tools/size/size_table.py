@@ -18,7 +18,9 @@ registers) and Cortex-M0+, and measures:
   stack   the deepest call chain below pg_world_step and below each public function,
           from gcc's -fcallgraph-info=su (frame sizes as in the .su files; library
           helpers such as memset and __aeabi_uldivmod count as 0);
-  cost    instructions per pyramid step under qemu -icount shift=0 (step_count.c).
+  cost    instructions per pyramid step under qemu -icount shift=0 (step_count.c), and
+          the calls of libgcc's 64-bit division helpers in those steps (step_count.c
+          with count_divisions.S).
 --write replaces the generated region of the given Markdown file (between
 "<!-- size_table:begin -->" and "<!-- size_table:end -->") with the tables, the date,
 the machine and this command. --check measures the flash only and fails (exit 1) when a
@@ -49,13 +51,17 @@ COMMON = ["-mthumb", "-mgeneral-regs-only", "-Os", "-std=c99", "-ffunction-secti
           "-Iinclude", "-Isrc", "-DPG_TRIG_TABLE_BITS=12", "-DPG_FAST_DIV64=0"]
 LINK = ["-Wl,--gc-sections", "-nostartfiles", "--specs=nano.specs"]
 FILE_FORMATS = ("scene_file.c", "replay_file.c", "replay_upgrade.c")
-# The issue's budgets (issue 30), KiB of flash.
-BUDGETS = {"step-only": 16, "core": 32, "everything": 64}
+# The issue's budgets (issue 30), KiB of flash; the core module has none of its own.
+BUDGETS = {"step-only": 16, "step-only-lean": 16, "core-module": None, "core": 32, "everything": 64}
 CONFIG_TEXT = {
     "step-only": "step-only circles and boxes",
-    "core": "core without file formats",
+    "step-only-lean": "step-only circles and boxes, without sleeping and continuous collision (`PG_CONFIG_EFFECTS=0x1F`)",
+    "core-module": "`pogon::core`: every public function of the core module",
+    "core": "core without file formats (core, state, commands)",
     "everything": "everything",
 }
+CONFIGS = ("step-only", "step-only-lean", "core-module", "core", "everything")
+LEAN = ["-DPG_CONFIG_EFFECTS=0x1Fu"]  # the library of step-only-lean
 GROWTH = 1.02
 
 
@@ -70,11 +76,29 @@ def library_sources():
     return sorted(os.path.join("src", f) for f in os.listdir(os.path.join(ROOT, "src")) if f.endswith(".c"))
 
 
-def compile_all(build, cpu, jobs):
+def core_sources():
+    """The files of the pogon_core target: POGON_CORE_SOURCES in src/CMakeLists.txt."""
+    with open(os.path.join(ROOT, "src", "CMakeLists.txt")) as f:
+        m = re.search(r"set\(POGON_CORE_SOURCES\s+([^)]*)\)", f.read())
+    return set(m.group(1).split())
+
+
+def public_api():
+    """The functions the public headers (include/pogon/*.h) declare."""
+    names = set()
+    inc = os.path.join(ROOT, "include", "pogon")
+    for f in os.listdir(inc):
+        if f.endswith(".h"):
+            with open(os.path.join(inc, f)) as fh:
+                names.update(re.findall(r"\b(pg_[A-Za-z0-9_]+)\s*\(", fh.read()))
+    return names
+
+
+def compile_all(build, cpu, jobs, extra=(), variant=""):
     """Objects of the library for one CPU, with their .su and .ci files beside them."""
-    out = os.path.join(build, cpu.replace("+", "plus"))
+    out = os.path.join(build, cpu.replace("+", "plus") + variant)
     os.makedirs(out, exist_ok=True)
-    flags = CPUS[cpu][0] + COMMON + ["-fstack-usage", "-fcallgraph-info=su"]
+    flags = CPUS[cpu][0] + COMMON + list(extra) + ["-fstack-usage", "-fcallgraph-info=su"]
 
     def one(src):
         obj = os.path.join(out, os.path.basename(src)[:-2] + ".o")
@@ -94,10 +118,12 @@ def archive(out, objects):
     return lib
 
 
-def public_functions(objects, exclude=()):
+def public_functions(objects, exclude=(), only=None):
     names = []
     for obj in objects:
         if os.path.basename(obj)[:-2] + ".c" in exclude:
+            continue
+        if only is not None and os.path.basename(obj)[:-2] + ".c" not in only:
             continue
         for line in run(["arm-none-eabi-nm", "-g", "--defined-only", obj]).splitlines():
             parts = line.split()
@@ -154,12 +180,17 @@ def measure_flash(build, jobs):
         every = public_functions(objects)
         configs = {
             "step-only": (os.path.join(HERE, "step_only.c"), []),
+            "core-module": (os.path.join(HERE, "baseline.c"), public_functions(objects, only=core_sources())),
             "core": (os.path.join(HERE, "baseline.c"), core),
             "everything": (os.path.join(HERE, "baseline.c"), every),
         }
         for name, (src, keep) in configs.items():
             elf = link_config(out, cpu, lib, src, keep, name)
             result[(name, cpu)] = (flash_of(elf) - base, holders(elf[:-4] + ".map"))
+        lean_out, lean_objects = compile_all(build, cpu, jobs, LEAN, "-lean")
+        lean_lib = archive(lean_out, lean_objects)
+        elf = link_config(lean_out, cpu, lean_lib, os.path.join(HERE, "step_only.c"), [], "step-only-lean")
+        result[("step-only-lean", cpu)] = (flash_of(elf) - base, holders(elf[:-4] + ".map"))
     return result
 
 
@@ -185,15 +216,30 @@ def write_limits(flash):
             f.write("%s %s %d\n" % (name, cpu, size))
 
 
-def firmware(build, cpu, sources, name):
+def firmware(build, cpu, sources, name, extra=()):
     out = os.path.join(build, cpu.replace("+", "plus"))
     os.makedirs(out, exist_ok=True)
     elf = os.path.join(out, name + ".elf")
-    run([CC] + CPUS[cpu][0] + COMMON + LINK + [
+    run([CC] + CPUS[cpu][0] + COMMON + LINK + list(extra) + [
         "-Itools/scenes", "-Iports/cortex-m", "--specs=rdimon.specs", "-Tports/cortex-m/mps2.ld",
         "ports/cortex-m/startup.c", "ports/cortex-m/syscalls.c", "tools/scenes/scenes.c"] + sources +
         library_sources() + ["-o", elf])
     return elf
+
+
+def measure_divisions(build):
+    """{cpu: (ldivmod calls, uldivmod calls) per pyramid step} from step_count.c built to
+    count them (count_divisions.S)."""
+    result = {}
+    for cpu in CPUS:
+        elf = firmware(build, cpu, ["tools/size/step_count.c", "tools/size/count_divisions.S"], "step_divisions",
+                       ["-DPOGON_COUNT_DIVISIONS", "-Wl,--wrap=__aeabi_ldivmod", "-Wl,--wrap=__aeabi_uldivmod"])
+        m = re.search(r"^divisions (\d+) (\d+) (\d+) (\d+)$", qemu(cpu, elf), re.M)
+        if not m:
+            raise RuntimeError("step_divisions on %s printed no divisions line" % cpu)
+        steps = int(m.group(2)) - int(m.group(1)) + 1
+        result[cpu] = (int(m.group(3)) / steps, int(m.group(4)) / steps)
+    return result
 
 
 def qemu(cpu, elf, icount=False):
@@ -204,13 +250,16 @@ def qemu(cpu, elf, icount=False):
 
 
 def measure_memory(build):
+    """{(bodies, shapes, contacts): bytes} and {(bodies, shapes, contacts): {part: bytes}}."""
     elf = firmware(build, "M4", ["tools/size/world_memory.c"], "world_memory")
-    sizes = {}
+    sizes, parts = {}, {}
     for line in qemu("M4", elf).splitlines():
         p = line.split()
         if p and p[0] == "memory":
             sizes[tuple(int(x) for x in p[1:4])] = int(p[4])
-    return sizes
+        elif p and p[0] == "part":
+            parts.setdefault(tuple(int(x) for x in p[1:4]), {})[" ".join(p[5:])] = int(p[4])
+    return sizes, parts
 
 
 def measure_steps(build):
@@ -273,7 +322,8 @@ def measure_stack(build):
     out = os.path.join(build, "M4")
     frames, edges, names, files = call_graph(out)
     memo = {}
-    public = [t for t in frames if ":" not in t and t.startswith("pg_")]
+    api = public_api()
+    public = [t for t in frames if ":" not in t and t in api]
     per_public = sorted(((deepest(t, frames, edges, memo), t) for t in public), key=lambda x: -x[0][0])
     per_core = [p for p in per_public if files.get(p[1]) not in FILE_FORMATS]
     step = deepest("pg_world_step", frames, edges, memo)
@@ -290,14 +340,34 @@ def measure_stack(build):
             todo.append(callee)
     largest = sorted(((frames[t][0], names[t]) for t in frames), reverse=True)[:6]
     short = lambda chain: " > ".join(names.get(c, c) for c in chain)
-    return step, per_public[:3] + per_core[:3], largest, short, sorted(dividers)
+    sites = division_sites(out)
+    reach = set(names.get(f, f) for f in seen)
+    step_sites = sorted((n, c) for n, c in sites.items() if n in reach)
+    over = [(d[0], t) for d, t in per_public if d[0] > 4096]
+    return step, per_public[:3] + per_core[:3], largest, short, sorted(dividers), step_sites, over, len(public)
+
+
+def division_sites(out):
+    """{function: calls of __aeabi_ldivmod / __aeabi_uldivmod in its code} (relocations)."""
+    sites = {}
+    for f in sorted(os.listdir(out)):
+        if not f.endswith(".o") or f in ("baseline.o",):
+            continue
+        fn = None
+        for line in run(["arm-none-eabi-objdump", "-dr", os.path.join(out, f)]).splitlines():
+            m = re.match(r"^[0-9a-f]+ <([^>]+)>:$", line)
+            if m:
+                fn = m.group(1)
+            elif fn and re.search(r"R_ARM_THM_(CALL|JUMP24)\s+__aeabi_u?ldivmod$", line):
+                sites[fn] = sites.get(fn, 0) + 1
+    return sites
 
 
 def kib(n):
     return "%.1f KiB" % (n / 1024.0)
 
 
-def markdown(flash, memory, stack, steps, command):
+def markdown(flash, memory, stack, steps, divisions, command):
     now = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC")
     cpu_model = platform.machine()
     try:
@@ -319,16 +389,19 @@ def markdown(flash, memory, stack, steps, command):
     L.append("")
     L.append("| configuration | budget | Cortex-M4 | Cortex-M0+ | status | largest parts (M4) |")
     L.append("| --- | --- | --- | --- | --- | --- |")
-    for name in ("step-only", "core", "everything"):
-        budget = BUDGETS[name] * 1024
+    for name in CONFIGS:
         m4, m0 = flash[(name, "M4")][0], flash[(name, "M0+")][0]
+        parts = ", ".join("%s.c %s" % (o, kib(s)) for o, s in flash[(name, "M4")][1])
+        if BUDGETS[name] is None:
+            L.append("| %s | - | %s | %s | - | %s |" % (CONFIG_TEXT[name], kib(m4), kib(m0), parts))
+            continue
+        budget = BUDGETS[name] * 1024
         worst = max(m4, m0)
         if worst <= budget:
             status = "within budget"
         else:
             status = "over budget by %s (M0+: %s)" % (kib(m4 - budget), kib(m0 - budget)) if m4 > budget \
                 else "M4 within, M0+ over by %s" % kib(m0 - budget)
-        parts = ", ".join("%s.c %s" % (o, kib(s)) for o, s in flash[(name, "M4")][1])
         L.append("| %s | %d KiB | %s | %s | %s | %s |" % (CONFIG_TEXT[name], BUDGETS[name], kib(m4), kib(m0), status, parts))
     L.append("")
     if limits:
@@ -336,12 +409,10 @@ def markdown(flash, memory, stack, steps, command):
                  "(+2 %%): %s." % ", ".join("%s %s %d B" % (n, c, v) for (n, c), v in sorted(limits.items())))
         L.append("")
     if memory:
-        b = memory[(33, 32, 128)] - memory[(32, 32, 128)]
-        s = memory[(32, 33, 128)] - memory[(32, 32, 128)]
-        c = memory[(32, 32, 129)] - memory[(32, 32, 128)]
-        big = memory[(1025, 1024, 4096)] - memory[(1024, 1024, 4096)]
-        pyr = [k for k in memory if k not in ((32, 32, 128), (33, 32, 128), (32, 33, 128), (32, 32, 129),
-                                               (1024, 1024, 4096), (1025, 1024, 4096))]
+        memory, parts = memory
+        base = (1024, 1024, 4096)
+        more = {"body": (1032, 1024, 4096), "shape": (1024, 1032, 4096), "contact": (1024, 1024, 4104)}
+        pyr = [k for k in memory if k != (32, 32, 128) and k != base and k not in more.values()]
         L.append("RAM (`pg_world_memory_size` on the Cortex-M4, 32-bit pointers):")
         L.append("")
         L.append("| world | bytes |")
@@ -349,13 +420,23 @@ def markdown(flash, memory, stack, steps, command):
         L.append("| 32 bodies, 32 shapes, 128 contacts | %d (%s) |" % (memory[(32, 32, 128)], kib(memory[(32, 32, 128)])))
         for k in pyr:
             L.append("| pyramid of 20 rows: %d bodies, %d shapes, %d contacts | %d (%s) |" % (k + (memory[k], kib(memory[k]))))
-        L.append("| 1024 bodies, 1024 shapes, 4096 contacts (the defaults) | %d (%s) |" % (memory[(1024, 1024, 4096)], kib(memory[(1024, 1024, 4096)])))
-        L.append("| one more body slot (at 32 / at 1024) | %d / %d |" % (b, big))
-        L.append("| one more shape slot | %d |" % s)
-        L.append("| one more contact slot | %d |" % c)
+        L.append("| 1024 bodies, 1024 shapes, 4096 contacts (the defaults) | %d (%s) |" % (memory[base], kib(memory[base])))
+        L.append("")
+        L.append("What one more slot costs, by part of the world's memory block (src/world.c, from 8 more slots "
+                 "at the defaults; the scratch area serves the broadphase, then the solver, then a body's mass, "
+                 "and is as large as the largest of them: here the solver's):")
+        L.append("")
+        L.append("| slot | budget | bytes | parts |")
+        L.append("| --- | --- | --- | --- |")
+        slot_budget = {"body": "256", "shape": "-", "contact": "192"}
+        for kind, key in more.items():
+            total = (memory[key] - memory[base]) / 8.0
+            split = sorted(((parts[key][n] - parts[base][n]) / 8.0, n) for n in parts[key] if parts[key][n] != parts[base][n])
+            L.append("| %s | %s | %g | %s |" % (kind, slot_budget[kind], total,
+                                              ", ".join("%s %g" % (n, b) for b, n in reversed(split))))
         L.append("")
     if stack:
-        step, public, largest, short, dividers = stack
+        step, public, largest, short, dividers, step_sites, over, n_public = stack
         L.append("Stack (Cortex-M4 -Os, deepest call chain from the .su frame sizes; library helpers count 0): "
                  "pg_world_step, the three deepest public calls, and the three deepest outside the file formats.")
         L.append("")
@@ -365,10 +446,15 @@ def markdown(flash, memory, stack, steps, command):
         for (depth, chain, bounded), _ in public:
             L.append("| %s | %d%s | %s |" % (chain[0], depth, "" if bounded else " (not bounded)", short(chain)))
         L.append("")
+        L.append("Public calls (of %d declared in include/pogon/) deeper than 4 KiB: %s." % (
+            n_public, ", ".join("%s %d B" % (t, d) for d, t in over) if over else "none"))
+        L.append("")
         L.append("Largest frames: %s." % ", ".join("%s %d B" % (n, b) for b, n in largest))
         L.append("")
         L.append("64-bit divisions (`__aeabi_ldivmod`, `__aeabi_uldivmod`) below pg_world_step, with "
-                 "`PG_FAST_DIV64=0`: called from %s." % (", ".join(dividers) if dividers else "nowhere"))
+                 "`PG_FAST_DIV64=0`: %d call sites in %d functions (%s)." % (
+                     sum(c for _, c in step_sites), len(step_sites),
+                     ", ".join("%s %d" % (n, c) for n, c in step_sites) if step_sites else "none"))
         L.append("")
     if steps:
         L.append("Step cost: the pyramid of %s rows (210 boxes, all awake), steps %s to %s, under "
@@ -379,6 +465,12 @@ def markdown(flash, memory, stack, steps, command):
         L.append("| --- | --- | --- |")
         for cpu in CPUS:
             L.append("| Cortex-%s | %.2f M | %.1f |" % (cpu, steps[cpu][0] / 1e6, steps[cpu][1]))
+        L.append("")
+    if divisions:
+        L.append("64-bit division calls per pyramid step (the same steps, step_count.c counting them through "
+                 "tools/size/count_divisions.S): %s." % "; ".join(
+                     "Cortex-%s %.0f (`__aeabi_ldivmod` %.0f, `__aeabi_uldivmod` %.0f)" % (cpu, a + b, a, b)
+                     for cpu, (a, b) in divisions.items()))
         L.append("")
     return "\n".join(L)
 
@@ -410,8 +502,8 @@ def main():
     build = os.path.abspath(args.build)
     flash = measure_flash(build, args.jobs)
     for (name, cpu), (size, parts) in sorted(flash.items()):
-        print("flash %-10s %-4s %7d B  budget %d KiB  largest: %s" % (
-            name, cpu, size, BUDGETS[name], ", ".join("%s %d" % p for p in parts)))
+        print("flash %-11s %-4s %7d B  budget %s KiB  largest: %s" % (
+            name, cpu, size, BUDGETS[name] or "-", ", ".join("%s %d" % p for p in parts)))
     if args.update_limits:
         write_limits(flash)
         print("size_table: wrote %s" % LIMITS)
@@ -425,8 +517,9 @@ def main():
                 continue
             allowed = int(limits[key] * GROWTH)
             verdict = "ok" if size <= allowed else "FAIL"
-            print("%s: %s %s %d B, limit %d B (%d + 2 %%), budget %d B" % (
-                verdict, key[0], key[1], size, allowed, limits[key], BUDGETS[key[0]] * 1024))
+            print("%s: %s %s %d B, limit %d B (%d + 2 %%), budget %s" % (
+                verdict, key[0], key[1], size, allowed, limits[key],
+                "%d B" % (BUDGETS[key[0]] * 1024) if BUDGETS[key[0]] else "none"))
             if size > allowed:
                 status = 1
         for cpu in CPUS:
@@ -438,14 +531,17 @@ def main():
                 status = 1
         return status
     memory = measure_memory(build)
-    for k, v in sorted(memory.items()):
+    for k, v in sorted(memory[0].items()):
         print("memory %s %d" % (k, v))
     stack = measure_stack(build)
     print("stack pg_world_step %d: %s" % (stack[0][0], stack[3](stack[0][1])))
     steps = measure_steps(build)
     for cpu, v in steps.items():
         print("pyramid step %s: %.0f instructions (%.2f per tick)" % (cpu, v[0], v[1]))
-    text = markdown(flash, memory, stack, steps, "tools/size/size_table.py" + (" --write " + args.write if args.write else ""))
+    divisions = measure_divisions(build)
+    for cpu, (a, b) in divisions.items():
+        print("pyramid step %s: %.1f __aeabi_ldivmod, %.1f __aeabi_uldivmod calls" % (cpu, a, b))
+    text = markdown(flash, memory, stack, steps, divisions, "tools/size/size_table.py" + (" --write " + args.write if args.write else ""))
     if args.write:
         write_region(os.path.join(ROOT, args.write) if not os.path.isabs(args.write) else args.write, text)
         print("size_table: wrote %s" % args.write)

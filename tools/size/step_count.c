@@ -6,7 +6,11 @@
  * factor is assumed. Output:
  *   calibration INSTRUCTIONS TICKS
  *   pyramid ROWS STEP_FIRST STEP_LAST TICKS
- * size_table.py turns the ticks into instructions per step. */
+ * size_table.py turns the ticks into instructions per step. Built with
+ * -DPOGON_COUNT_DIVISIONS and count_divisions.S (its own build, so the counting does
+ * not add to the instructions above) it also prints
+ *   divisions STEP_FIRST STEP_LAST LDIVMOD_CALLS ULDIVMOD_CALLS
+ * the calls of libgcc's 64-bit division helpers in those steps. */
 #include "pogon/pogon.h"
 #include "scenes.h"
 #include <stdio.h>
@@ -18,6 +22,10 @@
 #define SYST_RELOAD 0x00FFFFFFu
 
 static volatile uint32_t wraps;
+
+#ifdef POGON_COUNT_DIVISIONS
+extern volatile uint32_t pg_count_ldivmod, pg_count_uldivmod; /* count_divisions.S */
+#endif
 
 void pg_systick_handler(void);
 void pg_systick_handler(void) { ++wraps; }
@@ -85,6 +93,10 @@ int main(void)
         return 1;
     }
     for (step = 1; step < first; ++step) pg_world_step(scene.world);
+#ifdef POGON_COUNT_DIVISIONS
+    pg_count_ldivmod = 0;
+    pg_count_uldivmod = 0;
+#endif
     t0 = ticks_now();
     for (step = first; step <= last; ++step) {
         if (pg_world_step(scene.world) != PG_OK) return 1;
@@ -93,5 +105,9 @@ int main(void)
     printf("pyramid %lu %lu %lu", (unsigned long)rows, (unsigned long)first, (unsigned long)last);
     print_u64(" ", t1 - t0);
     printf("\n");
+#ifdef POGON_COUNT_DIVISIONS
+    printf("divisions %lu %lu %lu %lu\n", (unsigned long)first, (unsigned long)last, (unsigned long)pg_count_ldivmod,
+           (unsigned long)pg_count_uldivmod);
+#endif
     return 0;
 }
