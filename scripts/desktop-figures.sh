@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# desktop-figures.sh — measure pogon-desktop's figures and write them into docs/desktop.md.
+# desktop-figures.sh — measure pogon-desktop's figures and write them to a results file,
+# from which tools/docs/desktop_table.js renders docs/desktop.md's table (docs/generated.md).
 #
-# Usage: scripts/desktop-figures.sh [BUILD_DIR]     (default build/release, built already)
+# Usage: scripts/desktop-figures.sh [BUILD_DIR] [RESULTS]
+#   BUILD_DIR: default build/release, built already; RESULTS: default docs/results/desktop.tsv.
+#   Then: node tools/docs/regions.js --update
 #
 # Measures, on this machine, under xvfb-run with SDL's software renderer:
 #   - frames per second of the window (one step per drawn frame, no vsync) with the
@@ -12,10 +15,10 @@
 #   - the time to jump to the last frame of a 10-minute replay (36 000 frames, the same
 #     script pattern for ten minutes): straight from frame 0 in a fresh player, and after
 #     playing through (from the nearest kept snapshot), with the snapshots' memory.
-# The section between the figures markers of docs/desktop.md is replaced.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 build=${1:-build/release}
+results=${2:-docs/results/desktop.tsv}
 desktop=$build/ports/desktop/pogon-desktop
 [ -x "$desktop" ] || { echo "desktop-figures: build $desktop first (cmake --build --preset release)" >&2; exit 2; }
 work=$build/desktop-figures
@@ -50,7 +53,8 @@ session_script 10 >"$work/ten.script"
 
 stamp=$(date -u '+%Y-%m-%d %H:%M UTC')
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)
-machine="$cpu, $(nproc) cores, $(uname -sm); load average $(cut -d' ' -f1-3 /proc/loadavg) at the start"
+machine="$cpu, $(nproc) cores, $(uname -sm)"
+load=$(cut -d' ' -f1-3 /proc/loadavg)
 
 bench() { # SCENE EFFECTS VIEW...
   SDL_RENDER_DRIVER=software xvfb-run -a -s "-screen 0 1280x800x24" \
@@ -67,27 +71,20 @@ ten_bytes=$(stat -c %s "$work/ten.pgr")
 cold=$("$desktop" --headless --play "$work/ten.pgr" --until 36000 | sed -n 's/^until //p')
 warm=$("$desktop" --headless --play "$work/ten.pgr" --jump 0 --jump 36000 --jump 35999 | sed -n 's/^\(jump 3[0-9]*\|snapshots\)/\1/p')
 
-block=$(cat <<EOT
-Measured $stamp on $machine, by \`scripts/desktop-figures.sh\` (pogon-desktop of the release
-preset; the window under \`xvfb-run\` with SDL's **software renderer**, 960x600, one physics step
-per drawn frame, no vsync; the machine is shared, so frame rates vary with its load).
-
-| figure | value |
-| --- | --- |
-| window, pyramid awake (210 boxes, sleeping off) | $pyramid |
-| window, 2 000 circles | $circles |
-| replay bytes per minute, typical session (\`minute.script\`: an add, key pushes, a drag, two gravity toggles every 10 s, on scenes/demo.scene) | $minute_bytes bytes for $minute_frames frames |
-| 10-minute replay (36 000 frames, the same pattern) | $ten_bytes bytes |
-| jump to frame 36 000, fresh player (straight from frame 0) | $cold |
-| jumps after playing through once | $(echo "$warm" | paste -sd';' | sed 's/;/; /g') |
-EOT
-)
-python3 - "$block" <<'PY'
-import sys, re
-path = "docs/desktop.md"
-text = open(path).read()
-begin, end = "<!-- figures:begin (scripts/desktop-figures.sh) -->", "<!-- figures:end -->"
-i, j = text.index(begin) + len(begin), text.index(end)
-open(path, "w").write(text[:i] + "\n" + sys.argv[1] + "\n" + text[j:])
-PY
-echo "$block"
+# pogon-desktop's own lines, as it printed them; the table's wording is desktop_table.js's.
+{
+  echo "# pogon-desktop figures: one a line, tab-separated: figure, value (as pogon-desktop printed it)"
+  echo "# measured: $stamp"
+  echo "# machine: $machine"
+  echo "# load: $load"
+  echo "# command: scripts/desktop-figures.sh${*:+ $*}"
+  printf 'window_pyramid\t%s\n' "$pyramid"
+  printf 'window_circles\t%s\n' "$circles"
+  printf 'minute_bytes\t%s\n' "$minute_bytes"
+  printf 'minute_frames\t%s\n' "$minute_frames"
+  printf 'ten_minutes_bytes\t%s\n' "$ten_bytes"
+  printf 'jump_fresh\t%s\n' "$cold"
+  printf 'jumps_played\t%s\n' "$(echo "$warm" | paste -sd';' | sed 's/;/; /g')"
+} >"$results"
+cat "$results"
+echo "desktop-figures: wrote $results; render the documents with node tools/docs/regions.js --update" >&2

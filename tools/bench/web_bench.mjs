@@ -1,9 +1,12 @@
 // web_bench.mjs — the browser demo's figures, measured in headless Chromium, written
-// into docs/web-demo.md (between the web_bench markers) with date, machine and command.
+// to a results file (docs/results/web_demo.json) with date, machine, load and command.
+// tools/docs/web_demo_table.js renders docs/web-demo.md's figures from that file
+// (node tools/docs/regions.js --update; docs/generated.md).
 //
-// Usage: node tools/bench/web_bench.mjs [--site build/web/site] [--doc docs/web-demo.md]
+// Usage: node tools/bench/web_bench.mjs [--site build/web/site] [--results docs/results/web_demo.json]
 //                                       [--seconds 5] [--no-write]
-//   Build the site first: scripts/build-web.sh. Prints the figures as JSON either way.
+//   Build the site first: scripts/build-web.sh. Prints the figures as JSON either way
+//   (with each file's download size in bytes, which the results file sums up in KiB).
 //
 // What it measures, each in the page as a visitor runs it (the scene picker, the effect
 // switches), reading the page's own readouts (window.pogon: mean over the last second):
@@ -24,7 +27,7 @@ import { serveSite, openBrowser, openPage } from '../../tests/web/browser.mjs';
 const { values: opt } = parseArgs({
   options: {
     site: { type: 'string', default: 'build/web/site' },
-    doc: { type: 'string', default: 'docs/web-demo.md' },
+    results: { type: 'string', default: 'docs/results/web_demo.json' },
     seconds: { type: 'string', default: '5' },
     'no-write': { type: 'boolean', default: false },
   },
@@ -118,12 +121,13 @@ async function main() {
       await measureScene(page, 'scenes/bench_awake_500.scene', { sleeping: false }),
     ];
     const chromium = browser.context.browser()?.version() ?? 'unknown';
+    const download = downloadSize(opt.site);
     const result = {
-      date: new Date().toISOString().slice(0, 10), machine: machine(), chromium,
-      command: `node tools/bench/web_bench.mjs --seconds ${seconds}`, runs, download: downloadSize(opt.site), errors,
+      date: new Date().toISOString().slice(0, 10), machine: machine(), load: +loadavg()[0].toFixed(1), chromium,
+      command: `node tools/bench/web_bench.mjs --seconds ${seconds}`, runs, download, errors,
     };
     console.log(JSON.stringify(result, null, 2));
-    if (!opt['no-write']) writeDoc(result);
+    if (!opt['no-write']) writeResults(result);
   } finally {
     await browser.close();
     await site.close();
@@ -133,38 +137,21 @@ async function main() {
 function machine() {
   const cpu = cpus();
   return `${cpu[0]?.model ?? 'cpu'} (${cpu.length} cores seen, shared), ${(totalmem() / 2 ** 30).toFixed(0)} GiB, ` +
-    `${platform()} ${release()}, load average ${loadavg()[0].toFixed(1)} at the start`;
+    `${platform()} ${release()}`;
 }
 
-function writeDoc(r) {
-  const [demo, pyramid, circles, awake] = r.runs;
-  const kb = (n) => `${(n / 1024).toFixed(1)} KiB`;
-  const holds = awake.fps_min >= 58 ? 'yes' : 'no';
-  const block = [
-    '<!-- web_bench:begin (written by tools/bench/web_bench.mjs; do not edit by hand) -->',
-    `Measured ${r.date} on ${r.machine}, headless Chromium ${r.chromium}, with \`${r.command}\` ` +
-      `(site from \`scripts/build-web.sh\`). Each figure is the mean of ${pyramid.seconds} one-second readouts of the page ` +
-      '(ms per step: pga_frame; ms per frame: steps, drawing and readout of one display frame).',
-    '',
-    '| scene | bodies | sleeping | ms per step | ms per frame | display frames/s (mean, lowest) |',
-    '| --- | --- | --- | --- | --- | --- |',
-    ...[demo, pyramid, circles, awake].map((x) => `| ${x.scene.replace('scenes/', '')} | ${x.bodies} (awake at least ${x.awake_min}) | ` +
-      `${x.sleeping ? 'on' : 'off'} | ${x.ms_per_step} | ${x.ms_per_frame} | ${x.fps_mean}, ${x.fps_min} |`),
-    '',
-    `Holds 60 frames per second with ${awake.bodies - 3} bodies awake: **${holds}** (lowest one-second count ${awake.fps_min}; ` +
-      `the demo scene's 9 bodies drew ${demo.fps_mean} frames per second in the same run, which is what the browser's ` +
-      'display clock gave at that load). The page\'s own work for a frame with those 500 bodies took ' +
-      `${awake.ms_per_frame} ms of the 16.7 ms a 60 Hz frame allows.`,
-    '',
-    `Download (wasm + JS + HTML + CSS): ${kb(r.download.raw)}, gzipped ${kb(r.download.gzip)} ` +
-      `(pogon_web.wasm ${kb(r.download.files['pogon_web.wasm'].gzip)} gzipped).`,
-    '<!-- web_bench:end -->',
-  ].join('\n');
-  const doc = readFileSync(opt.doc, 'utf8');
-  const re = /<!-- web_bench:begin[\s\S]*?<!-- web_bench:end -->/;
-  if (!re.test(doc)) throw new Error(`${opt.doc} has no web_bench markers`);
-  writeFileSync(opt.doc, doc.replace(re, block));
-  console.error(`web_bench: wrote the figures into ${opt.doc}`);
+// The results file keeps what the documents show: the runs, and the download in KiB.
+function writeResults(r) {
+  const kib = (n) => +(n / 1024).toFixed(1);
+  const { download, errors, ...kept } = r;
+  const results = {
+    ...kept,
+    download_kib: {
+      total: kib(download.raw), total_gzip: kib(download.gzip), wasm_gzip: kib(download.files['pogon_web.wasm'].gzip),
+    },
+  };
+  writeFileSync(opt.results, JSON.stringify(results, null, 2) + '\n');
+  console.error(`web_bench: wrote ${opt.results}; render the documents with node tools/docs/regions.js --update`);
 }
 
 main().catch((err) => {

@@ -14,7 +14,9 @@
 //
 // COMMAND is split at spaces and run from the repository's root without a shell. Its first
 // word is a path in the repository (tools/bench/peers) or the name of a built tool
-// (pogon-accuracy), found through --tool NAME=PATH or else in build/release/tools/.
+// (pogon-accuracy), found through --tool NAME=PATH or else in build/release/tools/. A path
+// ending in .js, .mjs or .cjs runs under the node running this script; any other path
+// (a .sh, a .py) must be executable and start with its #! line.
 // How to add a table: docs/generated.md.
 'use strict';
 const fs = require('fs');
@@ -68,7 +70,10 @@ function render(command, where) {
   let exe = words[0];
   if (exe.includes('/')) exe = path.join(ROOT, exe);
   else exe = tools[exe] || path.join(ROOT, 'build', 'release', 'tools', exe);
-  const r = spawnSync(exe, words.slice(1), { cwd: ROOT, encoding: 'utf8', maxBuffer: 64 << 20 });
+  // a node script runs under this node (the one CTest found), whether or not `node` is on
+  // PATH; anything else runs through its #! line
+  const [file, argv] = /\.(c|m)?js$/.test(exe) ? [process.execPath, [exe, ...words.slice(1)]] : [exe, words.slice(1)];
+  const r = spawnSync(file, argv, { cwd: ROOT, encoding: 'utf8', maxBuffer: 64 << 20 });
   if (r.error || r.status !== 0) {
     process.stderr.write(`regions: ${where}: \`${command}\` failed (${r.error ? r.error.message : 'exit ' + r.status})` +
       (exe === words[0] ? '' : ` [${exe}]`) + `\n${r.stderr || ''}`);

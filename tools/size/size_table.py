@@ -2,7 +2,8 @@
 """size_table.py — pogon's flash, RAM, stack and step cost on Cortex-M, measured.
 
 Usage (from anywhere; paths are relative to the repository):
-  tools/size/size_table.py [--write docs/embedded.md] [--build DIR]
+  tools/size/size_table.py [--results docs/results/embedded.json] [--build DIR]
+  tools/size/size_table.py --render --results docs/results/embedded.json
   tools/size/size_table.py --check [--build DIR]      the cortex_m_size_and_no_float test
   tools/size/size_table.py --update-limits             after a size change on purpose
 
@@ -21,9 +22,10 @@ registers) and Cortex-M0+, and measures:
   cost    instructions per pyramid step under qemu -icount shift=0 (step_count.c), and
           the calls of libgcc's 64-bit division helpers in those steps (step_count.c
           with count_divisions.S).
---write replaces the generated region of the given Markdown file (between
-"<!-- size_table:begin -->" and "<!-- size_table:end -->") with the tables, the date,
-the machine and this command. --check measures the flash only and fails (exit 1) when a
+A measuring run prints the tables; --results FILE also writes every figure they show to
+FILE (JSON, with the date, machine, load average, toolchain and command), and
+--render --results FILE prints the tables from FILE without measuring: docs/embedded.md's
+generated region is that output (node tools/docs/regions.js --update; docs/generated.md). --check measures the flash only and fails (exit 1) when a
 configuration is larger than its limit in tools/size/flash_limits.txt (the size
 measured when the limit was set, plus 2 %), or when scripts/check-no-float.sh finds
 floating point in either CPU's library; it exits 77 when the toolchain is missing.
@@ -31,6 +33,7 @@ floating point in either CPU's library; it exits 77 when the toolchain is missin
 import argparse
 import concurrent.futures
 import datetime
+import json
 import os
 import platform
 import re
@@ -367,8 +370,7 @@ def kib(n):
     return "%.1f KiB" % (n / 1024.0)
 
 
-def markdown(flash, memory, stack, steps, divisions, command):
-    now = datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC")
+def machine():
     cpu_model = platform.machine()
     try:
         with open("/proc/cpuinfo") as f:
@@ -377,11 +379,56 @@ def markdown(flash, memory, stack, steps, divisions, command):
                 cpu_model += ", " + m.group(1).strip()
     except OSError:
         pass
-    compiler = run([CC, "--version"]).splitlines()[0]
-    qemu_version = run([QEMU, "--version"]).splitlines()[0]
+    return cpu_model
+
+
+def results_of(flash, memory, stack, steps, divisions, command):
+    """Every figure the tables show, as JSON (what --results writes and --render reads),
+    with when, where, at what load, with which toolchain and by which command."""
+    sizes, parts = memory
+    step, calls, largest, short, _, sites, over, n_public = stack
+    entry = lambda d: {"bytes": d[0], "chain": short(d[1]).split(" > "), "bounded": bool(d[2])}
+    return {
+        "measured": datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC"),
+        "machine": machine(),
+        "load": "%.2f %.2f %.2f" % os.getloadavg(),
+        "compiler": run([CC, "--version"]).splitlines()[0],
+        "qemu": run([QEMU, "--version"]).splitlines()[0],
+        "command": command,
+        "flash": [{"config": n, "cpu": c, "bytes": s, "parts": [list(x) for x in largest_parts]}
+                  for (n, c), (s, largest_parts) in sorted(flash.items())],
+        "memory": [{"world": list(k), "bytes": v, "parts": parts.get(k, {})} for k, v in sizes.items()],
+        "stack": {"step": entry(step), "calls": [entry(d) for d, _ in calls],
+                  "largest_frames": [list(x) for x in largest], "over_4k": [list(x) for x in over],
+                  "public_declared": n_public, "step_division_sites": [list(x) for x in sites]},
+        "steps": {cpu: {"instructions": v[0], "per_tick": v[1], "rows": v[2], "first": v[3], "last": v[4]}
+                  for cpu, v in steps.items()},
+        "divisions": {cpu: list(v) for cpu, v in divisions.items()},
+    }
+
+
+def from_results(r):
+    """The arguments of markdown() from a results file's JSON."""
+    flash = {(f["config"], f["cpu"]): (f["bytes"], [tuple(x) for x in f["parts"]]) for f in r["flash"]}
+    memory = ({tuple(m["world"]): m["bytes"] for m in r["memory"]}, {tuple(m["world"]): m["parts"] for m in r["memory"]})
+    s = r["stack"]
+    entry = lambda d: (d["bytes"], d["chain"], d["bounded"])
+    stack = (entry(s["step"]), [(entry(d), d["chain"][0]) for d in s["calls"]],
+             [tuple(x) for x in s["largest_frames"]], lambda chain: " > ".join(chain), None,
+             [tuple(x) for x in s["step_division_sites"]], [tuple(x) for x in s["over_4k"]], s["public_declared"])
+    steps = {cpu: (v["instructions"], v["per_tick"], v["rows"], v["first"], v["last"]) for cpu, v in r["steps"].items()}
+    divisions = {cpu: tuple(v) for cpu, v in r["divisions"].items()}
+    return flash, memory, stack, steps, divisions
+
+
+def markdown(r, path):
+    """The tables of the results r (read from path), as docs/embedded.md shows them."""
+    flash, memory, stack, steps, divisions = from_results(r)
     limits = read_limits()
     L = []
-    L.append("Generated %s on %s by `%s`; %s, %s." % (now, cpu_model, command, compiler, qemu_version))
+    L.append("Measured %s on %s (load average %s) by `%s`; %s, %s. Rendered from `%s` by "
+             "`tools/size/size_table.py --render`." % (r["measured"], r["machine"], r["load"], r["command"],
+                                                       r["compiler"], r["qemu"], path))
     L.append("")
     L.append("Flash: `-mthumb -Os -ffunction-sections -fdata-sections -mgeneral-regs-only`, newlib-nano, "
              "`--gc-sections`, 12-bit sine table, `PG_FAST_DIV64=0`; what pogon adds to a program "
@@ -475,26 +522,26 @@ def markdown(flash, memory, stack, steps, divisions, command):
     return "\n".join(L)
 
 
-def write_region(path, text):
-    begin, end = "<!-- size_table:begin -->", "<!-- size_table:end -->"
-    with open(path) as f:
-        doc = f.read()
-    if begin not in doc or end not in doc:
-        raise SystemExit("size_table: %s has no %s ... %s region" % (path, begin, end))
-    head, rest = doc.split(begin, 1)
-    _, tail = rest.split(end, 1)
-    with open(path, "w") as f:
-        f.write(head + begin + "\n" + text + "\n" + end + tail)
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--write", metavar="MARKDOWN", help="replace the generated region of this file")
+    ap.add_argument("--results", metavar="JSON", help="write the figures to this file (with --render: read them)")
+    ap.add_argument("--render", action="store_true", help="print the tables from --results FILE; measures nothing")
     ap.add_argument("--build", default=os.path.join(ROOT, "build", "size"), help="work directory")
     ap.add_argument("--check", action="store_true", help="flash only: fail above the limits")
     ap.add_argument("--update-limits", action="store_true", help="write today's flash as the limits")
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
+    if args.render:
+        if not args.results:
+            ap.error("--render needs --results FILE")
+        path = args.results if os.path.isabs(args.results) else os.path.join(ROOT, args.results)
+        try:
+            with open(path) as f:
+                results = json.load(f)
+            print(markdown(results, args.results))
+        except (OSError, ValueError, KeyError, TypeError, IndexError) as e:
+            raise SystemExit("size_table: %s: not a results file of size_table.py (%s: %s)" % (args.results, type(e).__name__, e))
+        return 0
     for tool in (CC, QEMU) if not args.check else (CC,):
         if shutil.which(tool) is None:
             print("size_table: %s not found (scripts/setup-deps.sh cortex-m installs it): skipped" % tool)
@@ -541,12 +588,14 @@ def main():
     divisions = measure_divisions(build)
     for cpu, (a, b) in divisions.items():
         print("pyramid step %s: %.1f __aeabi_ldivmod, %.1f __aeabi_uldivmod calls" % (cpu, a, b))
-    text = markdown(flash, memory, stack, steps, divisions, "tools/size/size_table.py" + (" --write " + args.write if args.write else ""))
-    if args.write:
-        write_region(os.path.join(ROOT, args.write) if not os.path.isabs(args.write) else args.write, text)
-        print("size_table: wrote %s" % args.write)
-    else:
-        print(text)
+    results = results_of(flash, memory, stack, steps, divisions,
+                         "tools/size/size_table.py" + (" --results " + args.results if args.results else ""))
+    if args.results:
+        with open(os.path.join(ROOT, args.results) if not os.path.isabs(args.results) else args.results, "w") as f:
+            json.dump(results, f, indent=1)
+            f.write("\n")
+        print("size_table: wrote %s; render the documents with node tools/docs/regions.js --update" % args.results)
+    print(markdown(results, args.results or "(not written)"))
     return 0
 
 
