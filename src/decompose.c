@@ -177,6 +177,10 @@ static pg_result clip_ears(const pg_vec2 *v, int32_t n, int64_t area2, pg__decom
 {
     uint8_t ord[PG_CONCAVE_MAX_VERTICES], prv[PG_CONCAVE_MAX_VERTICES], nxt[PG_CONCAVE_MAX_VERTICES];
     int32_t k, remaining = n, first = 0;
+    if (n < 3 || n > PG_CONCAVE_MAX_VERTICES) { /* checked by the caller; kept so every index below is set */
+        pg__text_put(why, "a polygon needs 3 to 64 vertices");
+        return PG_ERR_INVALID_ARGUMENT;
+    }
     for (k = 0; k < n; ++k) {
         ord[k] = (uint8_t)(area2 > 0 ? k : (n - k) % n); /* counter-clockwise from vertex 0 */
         prv[k] = (uint8_t)((k + n - 1) % n);

@@ -47,7 +47,7 @@ static det_reciprocal reciprocal_of_det(pg_u128 det)
 {
     det_reciprocal r;
     int bits = det.hi != 0 ? 64 + pg__bit_length64(det.hi) : pg__bit_length64(det.lo); /* >= 61 */
-    int s = bits - 40;                                                                    /* 21..84 */
+    int s = bits > 61 ? bits - 40 : 21; /* 21..84; bits >= 61 as det >= 2^60, the floor keeps every shift defined */
     uint64_t d = s >= 64 ? det.hi >> (s - 64) : (det.lo >> s) | (det.hi << (64 - s));  /* [2^39, 2^40) */
     r.recip = pg__div64_shl(INT64_C(1) << 40, (int64_t)d, 61); /* round(2^101 / d), (2^61, 2^62] */
     r.shift = 41 + s;                                           /* 2^60 / det = recip / 2^(41 + s) */

@@ -694,7 +694,7 @@ static void decode_shapes(source *r, pg_world *w, const pg_world_def *caps, size
                 pg__geometry_reach(&sh.geometry) > pg__body_reach_limit((pg_body_type)(r->body_info[(size_t)5u * sh.body] - 1u)))
                 invalid(r, at, "shape.geometry (reaches farther from its body's origin than the body's type allows)");
             if (r->error_field == NULL && r->body_info != NULL && sh.geometry.kind == PG_SHAPE_CHAIN_SEGMENT && sh.body < r->n_bodies &&
-                r->body_info[5u * sh.body] != 1u + (uint32_t)PG_BODY_STATIC)
+                r->body_info[(size_t)5u * sh.body] != 1u + (uint32_t)PG_BODY_STATIC)
                 invalid(r, at, "shape.kind (a chain segment on a body that is not static)");
             if (sh.density < 0 || sh.density > PG_FIX_C(100) || sh.friction < 0 || sh.friction > PG_FIX_C(10) ||
                 sh.restitution < 0 || sh.restitution > PG_FIX_ONE)
@@ -881,8 +881,8 @@ static void decode_joints(source *r, pg_world *w, const pg_world_def *caps, size
                 /* used bodies, two different ones (a mouse joint has no body A). Both may be
                  * static: pg_body_set_type can make them so after the joint was made, and
                  * such a joint acts on nothing */
-                int a_ok = mouse ? j.body_a == PG_NULL_INDEX : j.body_a < r->n_bodies && r->body_info[5u * j.body_a] != 0;
-                int b_ok = j.body_b < r->n_bodies && r->body_info[5u * j.body_b] != 0;
+                int a_ok = mouse ? j.body_a == PG_NULL_INDEX : j.body_a < r->n_bodies && r->body_info[(size_t)5u * j.body_a] != 0;
+                int b_ok = j.body_b < r->n_bodies && r->body_info[(size_t)5u * j.body_b] != 0;
                 if (!a_ok || !b_ok || j.body_a == j.body_b) invalid(r, at, "joint.bodies (not two used bodies)");
             }
             j.anchor_a = take_vec(r, "joint.anchor_a");
