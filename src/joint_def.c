@@ -129,3 +129,21 @@ pg_vec2 pg__joint_world_lever(const pg_world *world, uint32_t body, pg_vec2 anch
     pg_vec2 local = pg_v2(pg__sat64((int64_t)anchor.x - b->local_center.x), pg__sat64((int64_t)anchor.y - b->local_center.y));
     return pg_rot_apply(b->rot, local);
 }
+
+void pg__joint_store_limits(pg_world *world, pg_joint *j, int enable, pg_fix lower, pg_fix upper)
+{
+    j->flags = enable ? j->flags | PG_JOINT_FLAG_LIMIT : j->flags & ~(uint32_t)PG_JOINT_FLAG_LIMIT;
+    j->lower = lower;
+    j->upper = upper;
+    if (!enable) j->lower_impulse = j->upper_impulse = 0;
+    pg__joint_wake(world, j);
+}
+
+void pg__joint_store_motor(pg_world *world, pg_joint *j, int enable, pg_fix speed, pg_fix max_motor)
+{
+    j->flags = enable ? j->flags | PG_JOINT_FLAG_MOTOR : j->flags & ~(uint32_t)PG_JOINT_FLAG_MOTOR;
+    j->motor_speed = speed;
+    j->max_motor = max_motor;
+    if (!enable) j->motor_impulse = 0;
+    pg__joint_wake(world, j);
+}

@@ -15,6 +15,11 @@ pg_result pg__joint_check_softness(const pg_world *world, pg_fix hertz, pg_fix d
  * when the handle is stale or the kind differs. */
 pg_joint *pg__joint_of_type(pg_world *world, pg_joint_id id, pg_joint_type type, const char *who, pg_result *r);
 const pg_joint *pg__joint_of_type_const(const pg_world *world, pg_joint_id id, pg_joint_type type);
+/* Set a joint's limit range or its motor, once its kind has checked the values (a
+ * revolute's in radians, a prismatic's in metres): the flag, the values, the impulse of
+ * a turned-off part back to 0, and its bodies woken. */
+void pg__joint_store_limits(pg_world *world, pg_joint *j, int enable, pg_fix lower, pg_fix upper);
+void pg__joint_store_motor(pg_world *world, pg_joint *j, int enable, pg_fix speed, pg_fix max_motor);
 /* Take the lowest free slot for j (PG_ERR_CAPACITY when full) and write its handle. */
 pg_result pg__joint_add(pg_world *world, const pg_joint *j, pg_joint_id *out);
 /* A body slot's handle (the zero handle for PG_NULL_INDEX). */

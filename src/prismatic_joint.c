@@ -87,11 +87,7 @@ pg_result pg_prismatic_joint_set_limits(pg_world *world, pg_joint_id id, int ena
     pg_joint *j = pg__joint_of_type(world, id, PG_JOINT_PRISMATIC, "pg_prismatic_joint_set_limits", &r);
     if (j == NULL) return r;
     if ((r = check_limits(world, lower, upper)) != PG_OK) return r;
-    j->flags = enable ? j->flags | PG_JOINT_FLAG_LIMIT : j->flags & ~(uint32_t)PG_JOINT_FLAG_LIMIT;
-    j->lower = lower;
-    j->upper = upper;
-    if (!enable) j->lower_impulse = j->upper_impulse = 0;
-    pg__joint_wake(world, j);
+    pg__joint_store_limits(world, j, enable, lower, upper);
     return PG_OK;
 }
 
@@ -101,11 +97,7 @@ pg_result pg_prismatic_joint_set_motor(pg_world *world, pg_joint_id id, int enab
     pg_joint *j = pg__joint_of_type(world, id, PG_JOINT_PRISMATIC, "pg_prismatic_joint_set_motor", &r);
     if (j == NULL) return r;
     if ((r = check_motor(world, speed, max_force)) != PG_OK) return r;
-    j->flags = enable ? j->flags | PG_JOINT_FLAG_MOTOR : j->flags & ~(uint32_t)PG_JOINT_FLAG_MOTOR;
-    j->motor_speed = speed;
-    j->max_motor = max_force;
-    if (!enable) j->motor_impulse = 0;
-    pg__joint_wake(world, j);
+    pg__joint_store_motor(world, j, enable, speed, max_force);
     return PG_OK;
 }
 

@@ -70,11 +70,7 @@ pg_result pg_revolute_joint_set_limits(pg_world *world, pg_joint_id id, int enab
     pg_joint *j = pg__joint_of_type(world, id, PG_JOINT_REVOLUTE, "pg_revolute_joint_set_limits", &r);
     if (j == NULL) return r;
     if ((r = check_limits(world, lower, upper)) != PG_OK) return r;
-    j->flags = enable ? j->flags | PG_JOINT_FLAG_LIMIT : j->flags & ~(uint32_t)PG_JOINT_FLAG_LIMIT;
-    j->lower = lower;
-    j->upper = upper;
-    if (!enable) j->lower_impulse = j->upper_impulse = 0;
-    pg__joint_wake(world, j);
+    pg__joint_store_limits(world, j, enable, lower, upper);
     return PG_OK;
 }
 
@@ -84,11 +80,7 @@ pg_result pg_revolute_joint_set_motor(pg_world *world, pg_joint_id id, int enabl
     pg_joint *j = pg__joint_of_type(world, id, PG_JOINT_REVOLUTE, "pg_revolute_joint_set_motor", &r);
     if (j == NULL) return r;
     if ((r = check_motor(world, speed, max_torque)) != PG_OK) return r;
-    j->flags = enable ? j->flags | PG_JOINT_FLAG_MOTOR : j->flags & ~(uint32_t)PG_JOINT_FLAG_MOTOR;
-    j->motor_speed = speed;
-    j->max_motor = max_torque;
-    if (!enable) j->motor_impulse = 0;
-    pg__joint_wake(world, j);
+    pg__joint_store_motor(world, j, enable, speed, max_torque);
     return PG_OK;
 }
 
