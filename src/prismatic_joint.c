@@ -51,6 +51,13 @@ static pg_result unit_axis(const pg_world *world, pg_vec2 axis, pg_vec2 *out)
     if (axis.x < PG_FIX_MIN || axis.y < PG_FIX_MIN) x = y = 0;
     len = (int64_t)pg__sqrt_nearest((uint64_t)(x * x + y * y));
     if (len < 66) return pg__fail(world, PG_ERR_DEGENERATE, "prismatic local_axis_a has no direction: give a nonzero vector (any length)");
+    /* an axis already of unit length (as stored, then written and read back) is kept: made
+     * unit again it could move by an LSB, and a world written as a scene would not load
+     * to the same joint */
+    if (len >= 65535 && len <= 65537) {
+        *out = axis;
+        return PG_OK;
+    }
     *out = pg_v2((pg_fix)((x * 65536 + (x < 0 ? -len / 2 : len / 2)) / len), (pg_fix)((y * 65536 + (y < 0 ? -len / 2 : len / 2)) / len));
     return PG_OK;
 }
