@@ -127,7 +127,11 @@ async function main() {
       command: `node tools/bench/web_bench.mjs --seconds ${seconds}`, runs, download, errors,
     };
     console.log(JSON.stringify(result, null, 2));
-    if (!opt['no-write']) writeResults(result);
+    // A page that threw while it was measured did not run what the figures say it ran.
+    if (errors.length > 0) {
+      console.error(`web_bench: the page reported ${errors.length} error(s); nothing written:\n  ${errors.join('\n  ')}`);
+      process.exitCode = 1;
+    } else if (!opt['no-write']) writeResults(result);
   } finally {
     await browser.close();
     await site.close();
