@@ -153,14 +153,16 @@ typedef struct pga_draw_shape {
 /* Every shape of every body, in slot order; valid until the next call into the app. */
 const pga_draw_shape *pga_draw_list(const pga_app *app, uint32_t *count);
 /* Every joint whose body B (or, when B has no shape, body A) has a shape, in that body's
- * slot order: what to draw, with world anchors. A pin (revolute) is a dot at `b`, a rod
- * a line, a spring a zigzag, a mouse joint a thin line from the body's anchor `b` to its
- * target `a`. Valid until the next call into the app. */
+ * slot order: what to draw, with world anchors. A pin (revolute) is a dot at `b` with
+ * thin arms from the bodies' origins (a pendulum shows its arm), a rod a line, a spring a
+ * zigzag, a mouse joint a thin line from the body's anchor `b` to its target `a`. Valid
+ * until the next call into the app. */
 typedef struct pga_draw_joint {
     pg_joint_id joint;
     pg_joint_type type;
     int spring;                          /* a distance joint with its spring on */
     pg_vec2 a, b;                        /* world anchors on body A and body B; mouse: a = target */
+    pg_vec2 origin_a, origin_b;          /* the bodies' origins; mouse: origin_a = target */
     uint32_t color;                      /* 0xRRGGBB by kind, the same on every front end */
 } pga_draw_joint;
 const pga_draw_joint *pga_draw_joints(const pga_app *app, uint32_t *count);

@@ -89,8 +89,10 @@ static int describe(const pg_world *w, pg_joint_id j, pga_draw_joint *d)
         pg_mouse_joint_def def;
         if (pg_mouse_joint_get_def(w, j, &def) != PG_OK) return 0;
         d->a = def.target;
+        d->origin_a = def.target;
         if (!pga_anchor_from_user_data(def.user_data, &lb)) lb = pg_v2_zero(); /* not the app's: its origin */
         d->b = to_world(w, b, lb);
+        d->origin_b = pg_body_position(w, b);
         d->color = color_of(d->type, 0);
         return 1;
     }
@@ -98,6 +100,8 @@ static int describe(const pg_world *w, pg_joint_id j, pga_draw_joint *d)
     }
     d->a = to_world(w, a, la);
     d->b = to_world(w, b, lb);
+    d->origin_a = pg_body_position(w, a);
+    d->origin_b = pg_body_position(w, b);
     d->color = color_of(d->type, d->spring);
     return 1;
 }

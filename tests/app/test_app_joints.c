@@ -396,12 +396,14 @@ static void test_draw_joints(void **state)
         if (d[i].type == PG_JOINT_REVOLUTE) {
             pins++;
             assert_true(pg_v2_equal(d[i].a, at(0, 5)) && pg_v2_equal(d[i].b, at(0, 5)));
+            assert_true(pg_v2_equal(d[i].origin_a, at(0, 5)) && pg_v2_equal(d[i].origin_b, at(0, 5)));
         } else if (d[i].spring) {
             springs++;
             assert_true(pg_v2_equal(d[i].a, at(4, 9)) && pg_v2_equal(d[i].b, at(4, 5)));
         } else {
             rods++;
             assert_true(pg_v2_equal(d[i].a, at(0.25, 5)) && pg_v2_equal(d[i].b, at(4, 5.25)));
+            assert_true(pg_v2_equal(d[i].origin_a, at(0, 5)) && pg_v2_equal(d[i].origin_b, at(4, 5)));
         }
     }
     assert_int_equal(pins, 1);
