@@ -461,21 +461,31 @@ static void test_recording_with_joints_verifies(void **state)
     pga_destroy(app);
 }
 
-/* A drag does not survive a preset change: no mouse joint is left behind. */
-static void test_preset_drops_drag(void **state)
+/* A preset change keeps the pins, rods and springs (their anchors are written with the
+ * world), but a drag does not survive it: no mouse joint is left behind. */
+static void test_preset_keeps_joints_drops_drag(void **state)
 {
     pga_app *app = app_with("fall", fall_scene);
+    const pga_draw_joint *d;
+    uint32_t n;
     (void)state;
+    pga_set_paused(app, 1);
     (void)add(app, PGA_TOOL_BOX, 0, 0.5);
+    (void)add(app, PGA_TOOL_BALL, 4, 6);
+    clicks(app, PGA_TOOL_PIN, 4, 6, 2, 6);
+    clicks(app, PGA_TOOL_SPRING, 0, 0.5, 0, 4);
+    pga_set_paused(app, 0);
     pga_set_tool(app, PGA_TOOL_MOVE);
     pga_pointer_down(app, at(0, 0.5));
     pga_pointer_move(app, at(0, 3));
     frames(app, 5);
-    assert_int_equal(pga_joint_count(app), 1);
+    assert_int_equal(pga_joint_count(app), 3);
     assert_int_equal(pga_set_preset(app, PGA_PRESET_ACCURATE), PG_OK);
-    assert_int_equal(pga_joint_count(app), 0);
+    assert_int_equal(pga_joint_count(app), 2);
     frames(app, 5);
-    assert_int_equal(pga_joint_count(app), 0);
+    d = pga_draw_joints(app, &n);
+    assert_int_equal(n, 2);
+    assert_true(d[0].type != PG_JOINT_MOUSE && d[1].type != PG_JOINT_MOUSE);
     pga_destroy(app);
 }
 
@@ -493,7 +503,7 @@ int main(void)
         cmocka_unit_test(test_delete_joints),
         cmocka_unit_test(test_draw_joints),
         cmocka_unit_test(test_recording_with_joints_verifies),
-        cmocka_unit_test(test_preset_drops_drag),
+        cmocka_unit_test(test_preset_keeps_joints_drops_drag),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
