@@ -6,7 +6,8 @@
  * PGA_DRAG_FORCE_PER_KG x mass (Box2D's testbed's 1000 x mass; saturated at the Q16.16
  * force limit, 32767 N) and the core's default spring (5 Hz, ratio 0.7). Every stepped
  * frame in which the pointer has moved gives a set_mouse_target command; the frame after
- * the release a destroy_joint. A press and release between two steps make no joint.
+ * the release a destroy_joint. A press and release between two steps make no joint; a
+ * new press before a step replaces the joint there.
  * A kinematic body has no mass for a joint to pull: its velocity is set toward the
  * pointer (PGA_DRAG_GAIN per second of distance, at most PGA_DRAG_SPEED), and it stops
  * when released (app_input.c). */
@@ -24,6 +25,7 @@ void pga__drag_start(pga_app *app, pg_body_id body, pg_vec2 point)
     app->drag_offset = pg_v2_sub(pg_body_position(w, body), point);
     app->drag_point = point;
     app->drag_target = point;
+    app->drag_pressed = 1;
 }
 
 void pga_pointer_move(pga_app *app, pg_vec2 point)
@@ -102,6 +104,9 @@ void pga__drag_commands(pga_app *app)
     /* a joint destroyed with its body (deleted, or gone beyond the world) */
     if (app->drag_joint.generation != 0 && !pg_joint_is_valid(w, app->drag_joint))
         app->drag_joint.index = app->drag_joint.generation = 0;
+    /* a press since the last step (a release and a new press while paused) starts anew */
+    if (app->drag_pressed) pga__drag_drop_joint(app);
+    app->drag_pressed = 0;
     if (!app->dragging || !pg_body_is_valid(w, app->drag_body)) {
         app->dragging = 0;
         pga__drag_drop_joint(app);

@@ -114,6 +114,7 @@ struct pga_app {
     pg_vec2 drag_target;            /* where the pointer is */
     pg_vec2 drag_point;             /* where the body was pressed */
     pg_joint_id drag_joint;         /* the mouse joint of a dynamic body's drag, once made */
+    int drag_pressed;               /* a press since the last stepped frame: its joint replaces any other */
     pg_vec2 drag_sent_target;       /* the target last given to it */
 
     int paused, step_requested;

@@ -282,6 +282,33 @@ static void test_click_makes_no_joint(void **state)
     pga_destroy(app);
 }
 
+/* Released and pressed again on another body while paused: the next step moves the drag
+ * to the new body (one mouse joint, on it), and the first body is let go. */
+static void test_new_press_replaces_drag(void **state)
+{
+    pga_app *app = app_with("flat", flat_scene);
+    const pg_world *w = pga_world(app);
+    pg_body_id a, b;
+    (void)state;
+    a = add(app, PGA_TOOL_BOX, -3, 3);
+    b = add(app, PGA_TOOL_BOX, 3, 3);
+    pga_set_tool(app, PGA_TOOL_MOVE);
+    pga_pointer_down(app, at(-3, 3));
+    pga_pointer_move(app, at(-3, 5));
+    frames(app, 3);
+    assert_int_equal(pg_body_joints(w, a, NULL, 0), 1);
+    pga_set_paused(app, 1);
+    pga_pointer_up(app, at(-3, 5));
+    pga_pointer_down(app, at(3, 3));
+    pga_pointer_move(app, at(3, 6));
+    pga_set_paused(app, 0);
+    pga_frame(app);
+    assert_int_equal(pga_joint_count(app), 1);
+    assert_int_equal(pg_body_joints(w, a, NULL, 0), 0);
+    assert_int_equal(pg_body_joints(w, b, NULL, 0), 1);
+    pga_destroy(app);
+}
+
 static void refused(pga_app *app, uint64_t hash, const char *words)
 {
     uint32_t n = 1;
@@ -499,6 +526,7 @@ int main(void)
         cmocka_unit_test(test_drag_with_mouse_joint),
         cmocka_unit_test(test_drag_anchor_off_centre),
         cmocka_unit_test(test_click_makes_no_joint),
+        cmocka_unit_test(test_new_press_replaces_drag),
         cmocka_unit_test(test_refusals),
         cmocka_unit_test(test_delete_joints),
         cmocka_unit_test(test_draw_joints),
