@@ -309,6 +309,41 @@ static void test_new_press_replaces_drag(void **state)
     pga_destroy(app);
 }
 
+/* A replay stopped during a recorded drag keeps its mouse joint; the delete tool removes it. */
+static void test_replay_stopped_mid_drag(void **state)
+{
+    pga_app *app = app_with("fall", fall_scene);
+    const uint8_t *rec;
+    size_t size;
+    uint8_t *copy;
+    const pga_draw_joint *d;
+    uint32_t n;
+    (void)state;
+    (void)add(app, PGA_TOOL_BOX, 0, 0.5);
+    frames(app, 20);
+    pga_set_tool(app, PGA_TOOL_MOVE);
+    pga_pointer_down(app, at(0, 0.5));
+    pga_pointer_move(app, at(0, 3));
+    frames(app, 30);
+    assert_int_equal(pga_recording(app, &rec, &size), PG_OK);
+    copy = (uint8_t *)malloc(size);
+    memcpy(copy, rec, size);
+    assert_int_equal(pga_play_replay(app, copy, size), PG_OK);
+    free(copy);
+    while (pga_frame(app)) {
+    }
+    assert_int_equal(pga_stop_playback(app), PG_OK);
+    d = pga_draw_joints(app, &n);
+    assert_int_equal(n, 1);
+    assert_int_equal(d[0].type, PG_JOINT_MOUSE);
+    assert_true(pg_v2_equal(d[0].a, at(0, 3)));
+    pga_set_tool(app, PGA_TOOL_DELETE);
+    pga_pointer_down(app, at(0, 3));
+    pga_frame(app);
+    assert_int_equal(pga_joint_count(app), 0);
+    pga_destroy(app);
+}
+
 static void refused(pga_app *app, uint64_t hash, const char *words)
 {
     uint32_t n = 1;
@@ -527,6 +562,7 @@ int main(void)
         cmocka_unit_test(test_drag_anchor_off_centre),
         cmocka_unit_test(test_click_makes_no_joint),
         cmocka_unit_test(test_new_press_replaces_drag),
+        cmocka_unit_test(test_replay_stopped_mid_drag),
         cmocka_unit_test(test_refusals),
         cmocka_unit_test(test_delete_joints),
         cmocka_unit_test(test_draw_joints),
