@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *const tool_names[PGA_TOOL_COUNT] = {"move", "delete", "ball", "capsule",
-                                                       "box", "triangle", "star", "wall"};
+static const char *const tool_names[PGA_TOOL_COUNT] = {"move", "delete", "ball", "capsule", "box",
+                                                       "triangle", "star", "wall", "pin", "rod", "spring"};
 static const char *const preset_names[PGA_PRESET_COUNT] = {"fast", "balanced", "accurate"};
 static const uint32_t preset_substeps[PGA_PRESET_COUNT] = {2, 4, 8};
 
@@ -40,6 +40,7 @@ void pga_destroy(pga_app *app)
     if (app->scratch != NULL) {
         free(app->scratch->shapes);
         free(app->scratch->bodies);
+        free(app->scratch->joints);
         free(app->scratch);
     }
     free(app->queue);
@@ -77,6 +78,7 @@ void pga__reset_input(pga_app *app)
     memset(app->keys, 0, sizeof app->keys);
     app->pending_count = 0;
     app->dragging = 0;
+    app->drag_joint.index = app->drag_joint.generation = 0;
     app->driven.index = app->driven.generation = 0;
     app->queue_count = 0;
     app->frame_command_count = 0;
@@ -159,6 +161,8 @@ pga_params pga_default_params(void)
     p.restitution = 0;
     p.color = 0x3b82f6u;
     p.nudge = 0;
+    p.spring_hertz = PG_FIX_C(4);
+    p.spring_damping = pg_fix_from_ratio(3, 10);
     return p;
 }
 
@@ -194,6 +198,9 @@ pg_result pga_set_params(pga_app *app, const pga_params *p)
     else if (!in_range(p->friction, 0, PG_FIX_C(10))) what = "friction must be 0..10";
     else if (!in_range(p->restitution, 0, PG_FIX_ONE)) what = "restitution must be 0..1";
     else if (p->color > 0xffffffu) what = "colour must be 0xRRGGBB (at most 0xffffff)";
+    /* the core's ranges for a distance joint's spring; hertz 0 would be no spring at all */
+    else if (!in_range(p->spring_hertz, 1, PG_FIX_C(1000))) what = "spring frequency must be above 0 and at most 1000 Hz";
+    else if (!in_range(p->spring_damping, 0, PG_FIX_C(1000))) what = "spring damping ratio must be 0..1000";
     if (what != NULL) {
         pga__say(app, PGA_MESSAGE_REFUSED, "Parameters not changed: %s", what);
         return PG_ERR_ENVELOPE;
@@ -324,8 +331,10 @@ pg_result pga_set_preset(pga_app *app, pga_preset preset)
         pga__say(app, PGA_MESSAGE_REFUSED, "Preset not changed: %s", app->mode == PGA_MODE_EMPTY ? "no scene is loaded" : "stop the playback first");
         return PG_ERR_INVALID_ARGUMENT;
     }
-    /* queued changes name handles of the old world: they go in before it is written */
+    /* queued changes name handles of the old world: they go in before it is written; a
+     * drag does not survive the restart, so its mouse joint goes too */
     pga__flush_queue(app);
+    pga__drag_drop_joint(app);
     r = pga__restart_from(app, app->live.world, preset_substeps[preset], "Preset change");
     if (r != PG_OK) return r;
     app->preset = preset;

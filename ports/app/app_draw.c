@@ -1,10 +1,11 @@
 /* app_draw.c — what to draw: every shape of every body in world coordinates, with its
- * colour and flags; the colours themselves; what an edit panel shows of a body.
+ * colour and flags; the joints (listed by world_draw_joints.c); the colours themselves; what an edit panel shows of a body.
  *
  * Colours live in user_data (PGA_COLOR_FLAG, 0xRRGGBB in bits 32..55), set by the command
  * that makes a body, so a replay shows the same colours. Scene bodies without the flag
  * get a fixed colour by type and shape, the same on every front end. */
 #include "app_internal.h"
+#include "world_draw.h"
 
 #include <stdlib.h>
 
@@ -129,4 +130,30 @@ pg_result pga_get_body_info(const pga_app *app, pg_body_id body, pga_body_info *
     info.awake = pg_body_is_awake(w, body);
     *out = info;
     return PG_OK;
+}
+
+const pga_draw_joint *pga_draw_joints(const pga_app *app, uint32_t *count)
+{
+    const pg_world *w = pga__world(app);
+    pga_scratch *s;
+    uint32_t n;
+    if (count != NULL) *count = 0;
+    if (w == NULL || count == NULL) return NULL;
+    s = app->scratch;
+    n = pga_world_draw_joints(w, NULL, 0);
+    if (n > s->joint_capacity) {
+        pga_draw_joint *grown = (pga_draw_joint *)realloc(s->joints, sizeof *grown * n);
+        if (grown == NULL) return NULL;
+        s->joints = grown;
+        s->joint_capacity = n;
+    }
+    *count = pga_world_draw_joints(w, s->joints, s->joint_capacity);
+    if (*count > s->joint_capacity) *count = s->joint_capacity;
+    return s->joints;
+}
+
+uint32_t pga_joint_count(const pga_app *app)
+{
+    const pg_world *w = pga__world(app);
+    return w == NULL ? 0 : pga_world_draw_joints(w, NULL, 0);
 }

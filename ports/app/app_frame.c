@@ -27,6 +27,11 @@ pg_result pga__queue(pga_app *app, const pga_action *action)
 
 pg_result pga__apply(pga_app *app, const pg_command *command, pg_body_id *made)
 {
+    return pga__apply_made(app, command, made, NULL);
+}
+
+pg_result pga__apply_made(pga_app *app, const pg_command *command, pg_body_id *made, pg_joint_id *made_joint)
+{
     pg_result r;
     if (app->frame_command_count >= PG_REPLAY_MAX_FRAME_COMMANDS) {
         pga__say(app, PGA_MESSAGE_REFUSED, "Refused: a frame holds at most %u changes; step first", PG_REPLAY_MAX_FRAME_COMMANDS);
@@ -42,10 +47,17 @@ pg_result pga__apply(pga_app *app, const pg_command *command, pg_body_id *made)
         app->frame_commands = grown;
         app->frame_command_capacity = cap;
     }
-    r = pg_command_apply(app->live.world, command, made);
+    r = pg_command_apply_made(app->live.world, command, made, made_joint);
     /* A failing command changes nothing, so it is left out of the log. */
     if (r == PG_OK) app->frame_commands[app->frame_command_count++] = *command;
     return r;
+}
+
+/* A joint command's body A (the anchor made just before it). */
+static void set_joint_body_a(pg_command *c, pg_body_id body)
+{
+    if (c->kind == PG_CMD_CREATE_DISTANCE_JOINT) c->joint_def.distance.body_a = body;
+    else if (c->kind == PG_CMD_CREATE_REVOLUTE_JOINT) c->joint_def.revolute.body_a = body;
 }
 
 void pga__flush_queue(pga_app *app)
@@ -61,13 +73,17 @@ void pga__flush_queue(pga_app *app)
             if (made.generation == 0) continue; /* the body it belongs to was not made */
             a->command.body = made;
         }
+        if (a->anchor_is_last_made) {
+            if (made.generation == 0) continue; /* its anchor was not made */
+            set_joint_body_a(&a->command, made);
+        }
         r = pga__apply(app, &a->command, &created);
         if (r != PG_OK) {
             pga__say(app, PGA_MESSAGE_REFUSED, "Not done (%s): %s", pg_command_kind_name(a->command.kind),
                      pg_world_last_error(app->live.world));
             if (a->command.kind == PG_CMD_CREATE_BODY || a->command.kind == PG_CMD_MAKE) made = none;
-            /* a shape that could not be added leaves an empty body: remove it */
-            if (a->body_is_last_made && made.generation != 0) {
+            /* a shape that could not be added leaves an empty body, a joint its anchor: remove it */
+            if ((a->body_is_last_made || a->anchor_is_last_made) && made.generation != 0) {
                 pg_command d = pg_command_init(PG_CMD_DESTROY_BODY);
                 d.body = made;
                 (void)pga__apply(app, &d, NULL);
@@ -102,6 +118,7 @@ static void remove_escaped(pga_app *app)
             pg_command c = pg_command_init(PG_CMD_DESTROY_BODY);
             pg_body_id gone = ids[i];
             c.body = gone;
+            pga__remove_anchors_of(app, gone, 1); /* its pins' anchors, which would be left with nothing */
             if (pga__apply(app, &c, NULL) != PG_OK) continue;
             removed++;
             if (pg_body_id_equal(gone, app->selected)) app->selected.index = app->selected.generation = 0;

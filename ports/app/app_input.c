@@ -1,4 +1,5 @@
-/* app_input.c — held keys and the drag, turned into commands for the frame that steps.
+/* app_input.c — held keys, turned into commands for the frame that steps (the drag is
+ * app_drag.c's; while the player is dragged its keys wait).
  *
  * Keys act on the selected body (the player):
  *   kinematic: W/A/S/D set its velocity to PGA_KEY_SPEED in the key's direction, Q/E its
@@ -7,9 +8,7 @@
  *              gravity) while its speed in that direction is below PGA_KEY_SPEED, and a
  *              torque of inertia x PGA_KEY_SPIN_ACCEL while it turns slower than
  *              PGA_KEY_SPIN_MAX. A 1 m box of density 1 on ground of friction 0.6 reaches
- *              PGA_KEY_SPEED in about half a second.
- * The drag sets the held body's velocity toward the pointer (PGA_DRAG_GAIN per second of
- * distance, at most PGA_DRAG_SPEED); a kinematic body stops when it is released. */
+ *              PGA_KEY_SPEED in about half a second. */
 #include "app_internal.h"
 
 #define PGA_KEY_SPEED PG_FIX_C(6)
@@ -18,8 +17,6 @@
 #define PGA_KEY_SPIN PG_FIX_C(3)
 #define PGA_KEY_SPIN_ACCEL PG_FIX_C(30)
 #define PGA_KEY_SPIN_MAX PG_FIX_C(10)
-#define PGA_DRAG_GAIN PG_FIX_C(10)
-#define PGA_DRAG_SPEED PG_FIX_C(30)
 
 void pga_key(pga_app *app, pga_key_code key, int down)
 {
@@ -31,20 +28,7 @@ void pga_key(pga_app *app, pga_key_code key, int down)
     app->keys[key] = down != 0;
 }
 
-void pga_pointer_move(pga_app *app, pg_vec2 point)
-{
-    if (app == NULL || !app->dragging) return;
-    app->drag_target = point;
-}
-
-void pga_pointer_up(pga_app *app, pg_vec2 point)
-{
-    if (app == NULL || !app->dragging) return;
-    app->drag_target = point;
-    app->dragging = 0;
-}
-
-static void command_velocity(pga_app *app, pg_body_id body, pg_vec2 v)
+void pga__command_velocity(pga_app *app, pg_body_id body, pg_vec2 v)
 {
     pg_command c = pg_command_init(PG_CMD_SET_LINEAR_VELOCITY);
     c.body = body;
@@ -58,17 +42,6 @@ static void command_spin(pga_app *app, pg_body_id body, pg_fix w)
     c.body = body;
     c.scalar = w;
     (void)pga__apply(app, &c, NULL);
-}
-
-/* Velocity toward the pointer, capped. */
-static void drag(pga_app *app)
-{
-    const pg_world *w = app->live.world;
-    pg_vec2 target = pg_v2_add(app->drag_target, app->drag_offset);
-    pg_vec2 v = pg_v2_scale(pg_v2_sub(target, pg_body_position(w, app->drag_body)), PGA_DRAG_GAIN);
-    pg_fix speed = pg_v2_length(v);
-    if (speed > PGA_DRAG_SPEED) v = pg_v2_scale(pg_v2_normalize(v), PGA_DRAG_SPEED);
-    command_velocity(app, app->drag_body, v);
 }
 
 
@@ -105,7 +78,7 @@ static void drive_kinematic(pga_app *app, pg_body_id body, int dx, int dy, int s
     const pg_world *w = app->live.world;
     pg_vec2 v = pg_v2(dx * PGA_KEY_SPEED, dy * PGA_KEY_SPEED);
     pg_fix av = spin * PGA_KEY_SPIN;
-    if (!pg_v2_equal(v, pg_body_linear_velocity(w, body))) command_velocity(app, body, v);
+    if (!pg_v2_equal(v, pg_body_linear_velocity(w, body))) pga__command_velocity(app, body, v);
     if (av != pg_body_angular_velocity(w, body)) command_spin(app, body, av);
     if (dx != 0 || dy != 0 || spin != 0) app->driven = body;
     else app->driven.index = app->driven.generation = 0;
@@ -134,8 +107,8 @@ void pga__control_commands(pga_app *app)
 
     if (app->dragging && !pg_body_is_valid(w, app->drag_body)) app->dragging = 0;
     stop_left_behind(app);
+    pga__drag_commands(app);
     if (app->dragging) {
-        drag(app);
         if (pg_body_type_of(w, app->drag_body) == PG_BODY_KINEMATIC) app->driven = app->drag_body;
         if (pg_body_id_equal(app->drag_body, sel)) return; /* the pointer leads; keys wait */
     }

@@ -4,11 +4,14 @@
  *   app.c          life, messages, tools and parameters, selection, small accessors
  *   app_world.c    building a world from scene text (capacities, substeps), listing bodies
  *   app_tools.c    what a pointer press does: select, delete, add (overlap check, nudge)
- *   app_input.c    held keys and the drag: the commands they give each frame
+ *   app_joint_tools.c  the pin, rod and spring tools, and deleting joints and their anchors
+ *   app_input.c    held keys: the commands they give each frame
+ *   app_drag.c     the drag: a mouse joint (dynamic) or a velocity (kinematic) each frame
  *   app_frame.c    the queue of actions and pga_frame in live mode (apply, log, step)
  *   app_record.c   the replay writer in a growing buffer, pga_recording
  *   app_playback.c playing a replay file
  *   app_draw.c     the draw list and colours
+ *   world_draw_joints.c  the joints of a world as a draw list (also for replay views)
  * Data flows one way: input and actions fill the queue, pga_frame turns it into commands
  * on the world and the log, drawing only reads.
  */
@@ -25,6 +28,10 @@
 #define PGA_MIN_BODIES 512u
 #define PGA_MIN_SHAPES 1024u
 #define PGA_MIN_CONTACTS 4096u
+#define PGA_MIN_JOINTS 256u
+/* The user_data tag (low 32 bits) of the shapeless static bodies the joint tools make as
+ * the world's end of a pin, rod or spring on empty space: "anch". */
+#define PGA_ANCHOR_TAG 0x616e6368u
 /* The most memory one world may take: a scene or replay asking for more (its capacities)
  * is refused with a message instead of failing an allocation (in wasm, aborting). */
 #define PGA_MAX_WORLD_BYTES ((size_t)256 << 20)
@@ -42,10 +49,12 @@ typedef struct pga_world_box {
 } pga_world_box;
 
 /* One queued world change: a command, and whether its `body` is the body made by the
- * previous command of the queue (a triangle: create_body, then add_shape to it). */
+ * previous command of the queue (a triangle: create_body, then add_shape to it; a joint
+ * to the world: the anchor, then the joint whose body A it is). */
 typedef struct pga_action {
     pg_command command;
     int body_is_last_made;
+    int anchor_is_last_made;   /* a CREATE_*_JOINT whose body_a is the body made just before */
     int select_made;     /* select the body this command makes */
 } pga_action;
 
@@ -75,6 +84,8 @@ typedef struct pga_scratch {
     uint32_t shape_capacity;
     pg_body_id *bodies;
     uint32_t body_capacity;
+    pga_draw_joint *joints;
+    uint32_t joint_capacity;
 } pga_scratch;
 
 enum { PGA_MODE_EMPTY = 0, PGA_MODE_LIVE, PGA_MODE_PLAYBACK };
@@ -90,6 +101,8 @@ struct pga_app {
     pga_preset preset;
     pg_vec2 pending[3];
     uint32_t pending_count;
+    pg_body_id pending_body;        /* a joint tool's first click: the body under it (or zero) */
+    pg_vec2 pending_local;          /* and the point in that body's frame */
 
     pg_body_id selected;
     int keys[PGA_KEY_COUNT];
@@ -99,6 +112,10 @@ struct pga_app {
     pg_body_id drag_body;
     pg_vec2 drag_offset;            /* body origin minus the grab point */
     pg_vec2 drag_target;            /* where the pointer is */
+    pg_vec2 drag_point;             /* where the body was pressed */
+    pg_joint_id drag_joint;         /* the mouse joint of a dynamic body's drag, once made */
+    int drag_pressed;               /* a press since the last stepped frame: its joint replaces any other */
+    pg_vec2 drag_sent_target;       /* the target last given to it */
 
     int paused, step_requested;
     pg_vec2 gravity_on;             /* the gravity the toggle restores */
@@ -159,10 +176,34 @@ pg_result pga__queue(pga_app *app, const pga_action *action);
 void pga__flush_queue(pga_app *app);
 /* Apply one command now and remember it for the next frame record. */
 pg_result pga__apply(pga_app *app, const pg_command *command, pg_body_id *made);
+/* pga__apply, and `made_joint` (may be NULL) receives a created joint. */
+pg_result pga__apply_made(pga_app *app, const pg_command *command, pg_body_id *made, pg_joint_id *made_joint);
 
 /* ---- app_input.c ---- */
 /* The key and drag commands of the frame that is about to step. */
 void pga__control_commands(pga_app *app);
+/* Apply a set_linear_velocity command now. */
+void pga__command_velocity(pga_app *app, pg_body_id body, pg_vec2 v);
+
+/* ---- app_drag.c ---- */
+/* Start holding `body` pressed at `point` (not static). */
+void pga__drag_start(pga_app *app, pg_body_id body, pg_vec2 point);
+/* The drag's commands of the frame about to step: make, move or destroy the mouse joint,
+ * or set a kinematic body's velocity. */
+void pga__drag_commands(pga_app *app);
+/* Destroy the drag's mouse joint now (before the world is written for a restart). */
+void pga__drag_drop_joint(pga_app *app);
+
+/* ---- app_joint_tools.c ---- */
+/* A press with the pin, rod or spring tool. */
+void pga__joint_tool_press(pga_app *app, pg_vec2 point);
+/* With the delete tool: queue the destruction of the joint drawn nearest `point` (within
+ * PGA_JOINT_PICK) and of its anchor; 1 when one was found. */
+int pga__delete_joint_at(pga_app *app, pg_vec2 point);
+/* Before `body` is destroyed: destroy the anchors (PGA_ANCHOR_TAG) whose joints all join
+ * them to `body`, which would be left joined to nothing. `now`: apply the commands now,
+ * else queue them. */
+void pga__remove_anchors_of(pga_app *app, pg_body_id body, int now);
 
 /* ---- app_record.c ---- */
 pg_result pga__recorder_start(pga_app *app);

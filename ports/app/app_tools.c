@@ -1,5 +1,6 @@
 /* app_tools.c — what a pointer press does with each tool: select (and start a drag),
- * delete, or add a body: one click for a ball, capsule, box or star, three for a
+ * delete (a joint near the point, else the body under it), hand the joint tools their
+ * clicks (app_joint_tools.c), or add a body: one click for a ball, capsule, box or star, three for a
  * triangle (its vertices), two for a wall (its ends).
  *
  * An add is checked against the world as it is now: a body that would overlap another is
@@ -249,23 +250,23 @@ static void select_and_grab(pga_app *app, pg_vec2 point)
         return;
     }
     (void)pga_select(app, body);
-    if (pg_body_type_of(w, body) != PG_BODY_STATIC) {
-        app->dragging = 1;
-        app->drag_body = body;
-        app->drag_offset = pg_v2_sub(pg_body_position(w, body), point);
-        app->drag_target = point;
-    }
+    if (pg_body_type_of(w, body) != PG_BODY_STATIC) pga__drag_start(app, body, point);
     pga__say(app, PGA_MESSAGE_INFO, "Selected body %u", body.index);
 }
 
+/* A joint drawn near the point goes first (joints are drawn over bodies), else the body
+ * under it, with the anchors of its joints to the world. */
 static void delete_at(pga_app *app, pg_vec2 point)
 {
-    pg_body_id body = pga__body_at(app, point);
+    pg_body_id body;
     pga_action a;
+    if (pga__delete_joint_at(app, point)) return;
+    body = pga__body_at(app, point);
     if (body.generation == 0) {
         pga__say(app, PGA_MESSAGE_REFUSED, "Nothing to delete here");
         return;
     }
+    pga__remove_anchors_of(app, body, 0);
     memset(&a, 0, sizeof a);
     a.command = pg_command_init(PG_CMD_DESTROY_BODY);
     a.command.body = body;
@@ -285,6 +286,9 @@ void pga_pointer_down(pga_app *app, pg_vec2 point)
     case PGA_TOOL_DELETE: delete_at(app, point); break;
     case PGA_TOOL_TRIANGLE: collect(app, point, 3, "Triangle"); break;
     case PGA_TOOL_WALL: collect(app, point, 2, "Wall"); break;
+    case PGA_TOOL_PIN:
+    case PGA_TOOL_ROD:
+    case PGA_TOOL_SPRING: pga__joint_tool_press(app, point); break;
     default: add_one_click(app, app->tool, point); break;
     }
 }

@@ -117,6 +117,7 @@ pg_result pga__world_build(pga_world_box *box, const char *text, size_t length, 
     if (def.max_bodies < PGA_MIN_BODIES) def.max_bodies = PGA_MIN_BODIES;
     if (def.max_shapes < PGA_MIN_SHAPES) def.max_shapes = PGA_MIN_SHAPES;
     if (def.max_contacts < PGA_MIN_CONTACTS) def.max_contacts = PGA_MIN_CONTACTS;
+    if (def.max_joints < PGA_MIN_JOINTS) def.max_joints = PGA_MIN_JOINTS;
     r = load(&def, text, length, &first, error, error_size);
     if (r != PG_OK) return r;
     canon = pga__world_text(first.world, &canon_size);

@@ -64,6 +64,11 @@ typedef enum pga_tool {
     PGA_TOOL_TRIANGLE,     /* three clicks: its vertices (either winding) */
     PGA_TOOL_STAR,         /* one click: a star of circumradius `radius` */
     PGA_TOOL_WALL,         /* two clicks: a static thin box from the first point to the second, `height` thick */
+    PGA_TOOL_PIN,          /* two clicks: the body to pin, then the pin: a revolute joint there to the body under
+                              it, or to the world (a shapeless static anchor) on empty space or on the first body */
+    PGA_TOOL_ROD,          /* two clicks: a rigid distance joint between the two points (bodies, or one body and
+                              empty space = the world) */
+    PGA_TOOL_SPRING,       /* as the rod, with a spring of `spring_hertz` and `spring_damping` */
     PGA_TOOL_COUNT
 } pga_tool;
 const char *pga_tool_name(pga_tool tool);          /* "move", "delete", "ball", ... */
@@ -75,6 +80,9 @@ typedef struct pga_params {
     uint32_t color;        /* 0xRRGGBB of new bodies */
     int nudge;             /* nonzero: an add that would overlap is placed at the nearest free spot
                               (pg_world_find_free_position) instead of being refused */
+    pg_fix spring_hertz;   /* spring tool: frequency, Hz, (0, 1000]; default 4 (the core caps it at a quarter
+                              of the substep rate) */
+    pg_fix spring_damping; /* spring tool: damping ratio, 0..1000; default 0.3 */
 } pga_params;
 pga_params pga_default_params(void);
 
@@ -93,10 +101,12 @@ typedef enum pga_key_code {
 } pga_key_code;
 
 /* A press: acts according to the tool (select, delete, add, collect a triangle's or a
- * wall's point). The outcome is reported in pga_message(). */
+ * wall's or a joint's point). The outcome is reported in pga_message(). */
 void pga_pointer_down(pga_app *app, pg_vec2 point);
-/* While a body picked with the move tool is held, each frame drives it toward the
- * pointer with a velocity command; releasing stops the drag. */
+/* While a body picked with the move tool is held, each stepped frame drags it: a dynamic
+ * body by a mouse joint at the pressed point whose target follows the pointer (a command
+ * each frame the target changes), a kinematic body by a velocity toward the pointer.
+ * Releasing ends the drag (the mouse joint is destroyed at the next step). */
 void pga_pointer_move(pga_app *app, pg_vec2 point);
 void pga_pointer_up(pga_app *app, pg_vec2 point);
 /* Held keys push (force) or spin (torque) the selected body, as commands each frame. */
@@ -142,7 +152,22 @@ typedef struct pga_draw_shape {
 } pga_draw_shape;
 /* Every shape of every body, in slot order; valid until the next call into the app. */
 const pga_draw_shape *pga_draw_list(const pga_app *app, uint32_t *count);
-/* Points collected so far for a triangle or wall. */
+/* Every joint whose body B (or, when B has no shape, body A) has a shape, in that body's
+ * slot order: what to draw, with world anchors. A pin (revolute) is a dot at `b` with
+ * thin arms from the bodies' origins (a pendulum shows its arm), a rod a line, a spring a
+ * zigzag, a mouse joint a thin line from the body's anchor `b` to its target `a`. Valid
+ * until the next call into the app. */
+typedef struct pga_draw_joint {
+    pg_joint_id joint;
+    pg_joint_type type;
+    int spring;                          /* a distance joint with its spring on */
+    pg_vec2 a, b;                        /* world anchors on body A and body B; mouse: a = target */
+    pg_vec2 origin_a, origin_b;          /* the bodies' origins; mouse: origin_a = target */
+    uint32_t color;                      /* 0xRRGGBB by kind, the same on every front end */
+} pga_draw_joint;
+const pga_draw_joint *pga_draw_joints(const pga_app *app, uint32_t *count);
+uint32_t pga_joint_count(const pga_app *app);    /* the joints pga_draw_joints lists */
+/* Points collected so far for a triangle, a wall or a joint's first click. */
 const pg_vec2 *pga_pending_points(const pga_app *app, uint32_t *count);
 /* The latest message for the user and a counter that grows with each new one. */
 const char *pga_message(const pga_app *app);
@@ -162,6 +187,14 @@ pga_message_level pga_message_level_of(const pga_app *app);
 #define PGA_COLOR_FLAG (UINT64_C(1) << 56)
 uint64_t pga_user_data_with_color(uint64_t user_data, uint32_t color);
 uint32_t pga_body_color(const pga_app *app, pg_body_id body);   /* 0 for an invalid handle */
+/* The core's mouse joint def gives its target but not its anchor on the body, so the
+ * app's mouse joints carry the anchor (body frame, within +-128 m) in their user_data, and
+ * a replay draws the drag as it was: bit 57 (PGA_ANCHOR_FLAG), x in bits 0..23 and y in
+ * bits 24..47 as signed Q16.16. */
+#define PGA_ANCHOR_FLAG (UINT64_C(1) << 57)
+uint64_t pga_user_data_with_anchor(pg_vec2 local_anchor);
+/* 1 and *local_anchor when user_data holds an anchor, else 0. */
+int pga_anchor_from_user_data(uint64_t user_data, pg_vec2 *local_anchor);
 
 /* ---- what an edit panel shows ------------------------------------------------------------------ */
 typedef struct pga_body_info {

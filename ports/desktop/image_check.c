@@ -5,7 +5,63 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include <math.h>
+
+#include "render.h"
 #include "world_draw.h"
+
+/* Screen segments of the world's joints, to leave out the pixels they cover. */
+typedef struct joint_marks {
+    double (*seg)[4];
+    uint32_t count;
+} joint_marks;
+
+static joint_marks joint_segments(const desktop_view *view, const pg_world *world)
+{
+    joint_marks m;
+    pga_draw_joint *joints;
+    uint32_t n = pga_world_draw_joints(world, NULL, 0), i;
+    m.seg = NULL;
+    m.count = 0;
+    if (n == 0) return m;
+    joints = (pga_draw_joint *)malloc((size_t)n * sizeof *joints);
+    m.seg = (double (*)[4])malloc((size_t)n * 3 * sizeof *m.seg);
+    if (joints == NULL || m.seg == NULL) {
+        free(joints);
+        free(m.seg);
+        m.seg = NULL;
+        return m;
+    }
+    n = pga_world_draw_joints(world, joints, n);
+    for (i = 0; i < n; ++i) { /* the anchors' segment and each origin's arm to its anchor */
+        desktop_view_to_screen(view, joints[i].a, &m.seg[3 * i][0], &m.seg[3 * i][1]);
+        desktop_view_to_screen(view, joints[i].b, &m.seg[3 * i][2], &m.seg[3 * i][3]);
+        desktop_view_to_screen(view, joints[i].origin_a, &m.seg[3 * i + 1][0], &m.seg[3 * i + 1][1]);
+        desktop_view_to_screen(view, joints[i].a, &m.seg[3 * i + 1][2], &m.seg[3 * i + 1][3]);
+        desktop_view_to_screen(view, joints[i].origin_b, &m.seg[3 * i + 2][0], &m.seg[3 * i + 2][1]);
+        desktop_view_to_screen(view, joints[i].b, &m.seg[3 * i + 2][2], &m.seg[3 * i + 2][3]);
+    }
+    m.count = 3 * n;
+    free(joints);
+    return m;
+}
+
+/* Whether pixel (x, y) is within `reach` px of a joint's segment. */
+static int near_joint(const joint_marks *m, double x, double y, double reach)
+{
+    uint32_t i;
+    for (i = 0; i < m->count; ++i) {
+        double ax = m->seg[i][0], ay = m->seg[i][1], dx = m->seg[i][2] - ax, dy = m->seg[i][3] - ay;
+        double len2 = dx * dx + dy * dy, t = len2 > 0.0 ? ((x - ax) * dx + (y - ay) * dy) / len2 : 0.0;
+        double px, py;
+        if (t < 0.0) t = 0.0;
+        if (t > 1.0) t = 1.0;
+        px = ax + dx * t - x;
+        py = ay + dy * t - y;
+        if (sqrt(px * px + py * py) <= reach) return 1;
+    }
+    return 0;
+}
 
 static uint32_t pixel_rgb(SDL_Surface *s, int x, int y)
 {
@@ -39,6 +95,7 @@ int desktop_check_image(const char *path, const desktop_view *view, const pg_wor
     uint32_t count, i;
     int x, y, ok = 1;
     unsigned n = 0, bodies_seen = 0;
+    joint_marks marks;
     *checked = 0;
     if (loaded == NULL) {
         snprintf(report, report_capacity, "cannot read %s: %s", path, SDL_GetError());
@@ -63,6 +120,7 @@ int desktop_check_image(const char *path, const desktop_view *view, const pg_wor
         return 0;
     }
     count = pga_world_draw_shapes(world, shapes, count);
+    marks = joint_segments(view, world);
     /* Each shape's centre shows a body's colour. */
     for (i = 0; i < count && ok; ++i) {
         pg_body_id hits[4];
@@ -84,7 +142,7 @@ int desktop_check_image(const char *path, const desktop_view *view, const pg_wor
             ok = 0;
         }
     }
-    /* Where no body is within 3 px, the background shows. */
+    /* Where no body is within 3 px and no joint is drawn, the background shows. */
     for (y = DESKTOP_OVERLAY_HEIGHT + 4; y < img->h - DESKTOP_TIMELINE_HEIGHT - 4 && ok; y += 7) {
         for (x = 4; x < img->w - 4 && ok; x += 7) {
             pg_aabb box;
@@ -94,6 +152,7 @@ int desktop_check_image(const char *path, const desktop_view *view, const pg_wor
             box.lo = a;
             box.hi = b;
             if (pg_world_query_aabb(world, box, &hit, 1, &hit_count) != PG_OK || hit_count != 0) continue;
+            if (near_joint(&marks, x, y, DESKTOP_JOINT_REACH + 3)) continue;
             n++;
             if (pixel_rgb(img, x, y) != DESKTOP_BACKGROUND) {
                 pg_vec2 w = desktop_view_to_world(view, x, y);
@@ -110,6 +169,7 @@ int desktop_check_image(const char *path, const desktop_view *view, const pg_wor
     }
     if (ok) snprintf(report, report_capacity, "%u shape centres and %u empty pixels agree", bodies_seen, n - bodies_seen);
     free(shapes);
+    free(marks.seg);
     SDL_FreeSurface(img);
     *checked = n;
     return ok;

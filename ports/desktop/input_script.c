@@ -61,10 +61,12 @@ static int parse_effects(const word *w, uint32_t *bits)
     return 1;
 }
 
-static const char *const tool_words[] = {"move", "delete", "ball", "capsule", "box", "triangle", "star", "wall"};
+static const char *const tool_words[] = {"move", "delete", "ball", "capsule", "box", "triangle", "star", "wall",
+                                         "pin", "rod", "spring"};
 static const char *const key_words[] = {"left", "right", "up", "down", "ccw", "cw"};
 static const char *const preset_words[] = {"fast", "balanced", "accurate"};
-static const char *const param_words[] = {"radius", "width", "height", "density", "friction", "restitution", "color"};
+static const char *const param_words[] = {"radius", "width", "height", "density", "friction", "restitution", "color",
+                                          "spring_hertz", "spring_damping"};
 
 static int lookup(const word *w, const char *const *names, uint32_t count, uint32_t *out)
 {
@@ -277,6 +279,8 @@ void desktop_event_apply(pga_app *app, const desktop_event *e)
         else if (e->value == DESKTOP_PARAM_DENSITY) p.density = e->number;
         else if (e->value == DESKTOP_PARAM_FRICTION) p.friction = e->number;
         else if (e->value == DESKTOP_PARAM_RESTITUTION) p.restitution = e->number;
+        else if (e->value == DESKTOP_PARAM_SPRING_HERTZ) p.spring_hertz = e->number;
+        else if (e->value == DESKTOP_PARAM_SPRING_DAMPING) p.spring_damping = e->number;
         else p.color = (uint32_t)e->number;
         pga_set_params(app, &p);
         break;

@@ -36,7 +36,8 @@ typedef enum desktop_event_kind {
 } desktop_event_kind;
 
 typedef enum desktop_param { DESKTOP_PARAM_RADIUS, DESKTOP_PARAM_WIDTH, DESKTOP_PARAM_HEIGHT, DESKTOP_PARAM_DENSITY,
-                             DESKTOP_PARAM_FRICTION, DESKTOP_PARAM_RESTITUTION, DESKTOP_PARAM_COLOR } desktop_param;
+                             DESKTOP_PARAM_FRICTION, DESKTOP_PARAM_RESTITUTION, DESKTOP_PARAM_COLOR,
+                             DESKTOP_PARAM_SPRING_HERTZ, DESKTOP_PARAM_SPRING_DAMPING } desktop_param;
 
 typedef struct desktop_event {
     uint32_t tick;

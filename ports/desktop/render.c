@@ -108,3 +108,64 @@ void desktop_render_pending(SDL_Renderer *r, const desktop_view *v, const pg_vec
         py = sy;
     }
 }
+
+/* A zigzag of `n` teeth `amp` px to each side of the line from (x0, y0) to (x1, y1). */
+static void zigzag(SDL_Renderer *r, double x0, double y0, double x1, double y1, double amp, uint32_t color)
+{
+    double dx = x1 - x0, dy = y1 - y0, len = sqrt(dx * dx + dy * dy), nx, ny, px = x0, py = y0;
+    int n, i;
+    if (len < 1.0) return;
+    nx = -dy / len * amp;
+    ny = dx / len * amp;
+    n = (int)(len / 6.0);
+    if (n < 4) n = 4;
+    if (n > 60) n = 60;
+    for (i = 1; i <= n; ++i) {
+        double t = (double)i / (n + 1), side = (i % 2) ? 1.0 : -1.0;
+        double qx = x0 + dx * t + nx * side, qy = y0 + dy * t + ny * side;
+        thickLineRGBA(r, clamp16(px), clamp16(py), clamp16(qx), clamp16(qy), 2, channel(color, 16), channel(color, 8), channel(color, 0), 255);
+        px = qx;
+        py = qy;
+    }
+    thickLineRGBA(r, clamp16(px), clamp16(py), clamp16(x1), clamp16(y1), 2, channel(color, 16), channel(color, 8), channel(color, 0), 255);
+}
+
+void desktop_render_joints(SDL_Renderer *r, const desktop_view *v, const pga_draw_joint *joints, uint32_t count)
+{
+    uint32_t i;
+    for (i = 0; i < count; ++i) {
+        const pga_draw_joint *j = &joints[i];
+        uint32_t c = j->color;
+        double ax, ay, bx, by;
+        Uint8 cr = channel(c, 16), cg = channel(c, 8), cb = channel(c, 0);
+        desktop_view_to_screen(v, j->a, &ax, &ay);
+        desktop_view_to_screen(v, j->b, &bx, &by);
+        switch (j->type) {
+        case PG_JOINT_REVOLUTE: {
+            double ox, oy;
+            desktop_view_to_screen(v, j->origin_a, &ox, &oy);
+            aalineRGBA(r, clamp16(ox), clamp16(oy), clamp16(bx), clamp16(by), cr, cg, cb, 255);
+            desktop_view_to_screen(v, j->origin_b, &ox, &oy);
+            aalineRGBA(r, clamp16(ox), clamp16(oy), clamp16(bx), clamp16(by), cr, cg, cb, 255);
+            filledCircleRGBA(r, clamp16(bx), clamp16(by), 5, cr, cg, cb, 255);
+            filledCircleRGBA(r, clamp16(bx), clamp16(by), 2, 255, 255, 255, 255);
+            break;
+        }
+        case PG_JOINT_MOUSE:
+            aalineRGBA(r, clamp16(bx), clamp16(by), clamp16(ax), clamp16(ay), cr, cg, cb, 255);
+            circleRGBA(r, clamp16(ax), clamp16(ay), 4, cr, cg, cb, 255);
+            filledCircleRGBA(r, clamp16(bx), clamp16(by), 2, cr, cg, cb, 255);
+            break;
+        case PG_JOINT_DISTANCE:
+            if (j->spring) zigzag(r, ax, ay, bx, by, 5.0, c);
+            else thickLineRGBA(r, clamp16(ax), clamp16(ay), clamp16(bx), clamp16(by), 3, cr, cg, cb, 255);
+            filledCircleRGBA(r, clamp16(ax), clamp16(ay), 3, cr, cg, cb, 255);
+            filledCircleRGBA(r, clamp16(bx), clamp16(by), 3, cr, cg, cb, 255);
+            break;
+        default: /* weld, prismatic: a line between the anchors */
+            thickLineRGBA(r, clamp16(ax), clamp16(ay), clamp16(bx), clamp16(by), 2, cr, cg, cb, 255);
+            boxRGBA(r, clamp16(bx - 3), clamp16(by - 3), clamp16(bx + 3), clamp16(by + 3), cr, cg, cb, 255);
+            break;
+        }
+    }
+}

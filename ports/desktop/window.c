@@ -173,6 +173,34 @@ static void scale_sizes(desktop_window *w, int larger)
     pga_set_params(w->app, &p);
 }
 
+/* 1..8 the body tools in pga_tool order, 9 pin, 0 rod, - spring; -1 for other keys. */
+static int tool_of_key(SDL_Keycode c)
+{
+    if (c >= SDLK_1 && c <= SDLK_9) return (int)(c - SDLK_1);
+    if (c == SDLK_0) return PGA_TOOL_ROD;
+    if (c == SDLK_MINUS) return PGA_TOOL_SPRING;
+    return -1;
+}
+
+static const char *key_of_tool(pga_tool t)
+{
+    static const char *const keys[PGA_TOOL_COUNT] = {"1", "2", "3", "4", "5", "6", "7", "8", "9", "0", "-"};
+    return (unsigned)t < PGA_TOOL_COUNT ? keys[t] : "?";
+}
+
+/* The spring tool's frequency by 4/5 or 5/4 (`,` and `.`), within what the app takes. */
+static void scale_spring(desktop_window *w, int stiffer)
+{
+    pga_params p = pga_get_params(w->app);
+    char line[96], hz[PG_FIX_FORMAT_MAX], ratio[PG_FIX_FORMAT_MAX];
+    p.spring_hertz = (pg_fix)((int64_t)p.spring_hertz * (stiffer ? 5 : 4) / (stiffer ? 4 : 5));
+    if (pga_set_params(w->app, &p) != PG_OK) return;
+    pg_fix_format(p.spring_hertz, hz, sizeof hz);
+    pg_fix_format(p.spring_damping, ratio, sizeof ratio);
+    snprintf(line, sizeof line, "spring %s Hz, damping ratio %s", hz, ratio);
+    notice(w, line);
+}
+
 static void live_key(desktop_window *w, const SDL_KeyboardEvent *k)
 {
     SDL_Keycode c = k->keysym.sym;
@@ -182,11 +210,13 @@ static void live_key(desktop_window *w, const SDL_KeyboardEvent *k)
         return;
     }
     if (k->type != SDL_KEYDOWN || k->repeat) return;
-    if (c >= SDLK_1 && c <= SDLK_8) {
+    if (tool_of_key(c) >= 0) {
         char line[64];
-        pga_set_tool(w->app, (pga_tool)(c - SDLK_1));
+        pga_set_tool(w->app, (pga_tool)tool_of_key(c));
         snprintf(line, sizeof line, "tool %s", pga_tool_name(pga_get_tool(w->app)));
         notice(w, line);
+    } else if (c == SDLK_COMMA || c == SDLK_PERIOD) {
+        scale_spring(w, c == SDLK_PERIOD);
     } else if (c >= SDLK_F1 && c <= SDLK_F7) {
         pga_set_effects(w->app, pga_effects(w->app) ^ pga_effect_bit((uint32_t)(c - SDLK_F1)));
     } else if (c == SDLK_F9 || c == SDLK_F10 || c == SDLK_F11) {
@@ -360,18 +390,21 @@ static void draw_live(desktop_window *w)
     uint32_t count = 0, pending_count = 0, i;
     const pga_draw_shape *shapes = pga_draw_list(w->app, &count);
     const pg_vec2 *pending = pga_pending_points(w->app, &pending_count);
+    uint32_t joint_count = 0;
+    const pga_draw_joint *joints = pga_draw_joints(w->app, &joint_count);
     pga_params p = pga_get_params(w->app);
     char l1[256], l2[256], l3[320], effects[96];
     const char *lines[3];
     size_t len = 0;
     desktop_render_shapes(w->renderer, &w->view, shapes, count);
+    desktop_render_joints(w->renderer, &w->view, joints, joint_count);
     desktop_render_pending(w->renderer, &w->view, pending, pending_count);
     for (i = 0; i < pga_effect_count(); ++i)
         len += (size_t)snprintf(effects + len, len < sizeof effects ? sizeof effects - len : 0, "F%u %s%s ", i + 1,
                                 pga_effect_name(i), (pga_effects(w->app) & pga_effect_bit(i)) ? "+" : "-");
-    snprintf(l1, sizeof l1, "LIVE %s | tool %d %s | frame %llu | bodies %u | %s | preset %s | gravity %s | nudge %s",
-             pga_scene_name(w->app), (int)pga_get_tool(w->app) + 1, pga_tool_name(pga_get_tool(w->app)),
-             (unsigned long long)pga_frame_number(w->app), pga_body_count(w->app), pga_paused(w->app) ? "PAUSED" : "running",
+    snprintf(l1, sizeof l1, "LIVE %s | tool %s %s | frame %llu | bodies %u | joints %u | %s | preset %s | gravity %s | nudge %s",
+             pga_scene_name(w->app), key_of_tool(pga_get_tool(w->app)), pga_tool_name(pga_get_tool(w->app)),
+             (unsigned long long)pga_frame_number(w->app), pga_body_count(w->app), joint_count, pga_paused(w->app) ? "PAUSED" : "running",
              pga_preset_name(pga_get_preset(w->app)), pga_gravity_enabled(w->app) ? "on" : "off", p.nudge ? "on" : "off");
     snprintf(l2, sizeof l2, "%s| rec %s", effects, w->recorder.path);
     if (w->notice[0] != '\0' && w->notice_app_serial == pga_message_serial(w->app)) snprintf(l3, sizeof l3, "%s", w->notice);
@@ -380,6 +413,19 @@ static void draw_live(desktop_window *w)
     lines[1] = l2;
     lines[2] = l3;
     desktop_overlay_text(w->renderer, w->view.width, lines, 3);
+}
+
+/* The joints of the replay's world, over its bodies as in live mode. */
+static void draw_replay_joints(desktop_window *w)
+{
+    uint32_t n = pga_world_draw_joints(pga_seek_world(w->seek), NULL, 0);
+    pga_draw_joint *joints;
+    if (n == 0) return;
+    joints = (pga_draw_joint *)malloc((size_t)n * sizeof *joints);
+    if (joints == NULL) return;
+    n = pga_world_draw_joints(pga_seek_world(w->seek), joints, n);
+    desktop_render_joints(w->renderer, &w->view, joints, n);
+    free(joints);
 }
 
 static void draw_playback(desktop_window *w)
@@ -398,6 +444,7 @@ static void draw_playback(desktop_window *w)
     count = pga_world_draw_shapes(pga_seek_world(w->seek), w->shapes, w->shape_capacity);
     if (count > w->shape_capacity) count = w->shape_capacity;
     desktop_render_shapes(w->renderer, &w->view, w->shapes, count);
+    draw_replay_joints(w);
     if (st.seeking)
         snprintf(l1, sizeof l1, "PLAY %s | JUMPING to frame %u: %u of %u frames re-stepped", w->replay_name, st.seek_target,
                  st.frame - st.seek_from, st.seek_target - st.seek_from);

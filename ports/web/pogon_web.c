@@ -68,8 +68,20 @@ EXPORT int pgw_set_params(pg_fix radius, pg_fix width, pg_fix height, pg_fix den
     return (int)pga_set_params(g_app, &p);
 }
 
+/* The spring tool's frequency (Hz) and damping ratio, Q16.16, validated with the rest. */
+EXPORT int pgw_set_spring(pg_fix hertz, pg_fix damping_ratio)
+{
+    pga_params p;
+    if (!g_app) return PG_ERR_NULL;
+    p = pga_get_params(g_app);
+    p.spring_hertz = hertz;
+    p.spring_damping = damping_ratio;
+    return (int)pga_set_params(g_app, &p);
+}
+
 /* One parameter of the app's current set: 0 radius, 1 width, 2 height, 3 density,
- * 4 friction, 5 restitution, 6 colour, 7 nudge; of the defaults when `defaults`. */
+ * 4 friction, 5 restitution, 6 colour, 7 nudge, 8 spring hertz, 9 spring damping ratio;
+ * of the defaults when `defaults`. */
 EXPORT int32_t pgw_param(int which, int defaults)
 {
     pga_params p;
@@ -84,6 +96,8 @@ EXPORT int32_t pgw_param(int which, int defaults)
     case 5: return p.restitution;
     case 6: return (int32_t)p.color;
     case 7: return p.nudge;
+    case 8: return p.spring_hertz;
+    case 9: return p.spring_damping;
     default: return 0;
     }
 }
@@ -219,6 +233,33 @@ EXPORT int pgw_draw_layout(int which)
     case 7: return (int)offsetof(pga_draw_shape, color);
     case 8: return (int)offsetof(pga_draw_shape, flags);
     case 9: return (int)sizeof(pg_vec2);
+    default: return -1;
+    }
+}
+
+static uint32_t g_joint_draw_count;
+
+EXPORT const pga_draw_joint *pgw_draw_joints(void)
+{
+    g_joint_draw_count = 0;
+    return g_app ? pga_draw_joints(g_app, &g_joint_draw_count) : NULL;
+}
+EXPORT uint32_t pgw_joint_draw_count(void) { return g_joint_draw_count; }
+EXPORT uint32_t pgw_joint_count(void) { return g_app ? pga_joint_count(g_app) : 0u; }
+
+/* Byte offsets of pga_draw_joint's fields: 0 size, 1 type, 2 spring, 3 a, 4 b,
+ * 5 origin_a, 6 origin_b, 7 color (a pg_vec2 is x then y, int32 each). */
+EXPORT int pgw_joint_layout(int which)
+{
+    switch (which) {
+    case 0: return (int)sizeof(pga_draw_joint);
+    case 1: return (int)offsetof(pga_draw_joint, type);
+    case 2: return (int)offsetof(pga_draw_joint, spring);
+    case 3: return (int)offsetof(pga_draw_joint, a);
+    case 4: return (int)offsetof(pga_draw_joint, b);
+    case 5: return (int)offsetof(pga_draw_joint, origin_a);
+    case 6: return (int)offsetof(pga_draw_joint, origin_b);
+    case 7: return (int)offsetof(pga_draw_joint, color);
     default: return -1;
     }
 }

@@ -1,7 +1,7 @@
 /* app_session.h — a scripted playground session that uses every kind of world change
  * the app makes (adds of each kind, triangle and wall by clicks, keys, drag, gravity,
- * effects, nudge, delete, changes while paused, single step, material). Run on the demo
- * scene for 200 frames by test_app_replay and by app_record_session (whose file the
+ * effects, nudge, delete, changes while paused, single step, material, pin, rod, spring,
+ * the mouse-joint drag, deleting a joint). Run on the demo scene for 240 frames by test_app_replay and by app_record_session (whose file the
  * native pogon-replay verifies). */
 #ifndef POGON_APP_SESSION_H
 #define POGON_APP_SESSION_H
@@ -18,7 +18,7 @@ static void app_session_run(pga_app *app)
 {
     pga_params p = pga_default_params();
     int f;
-    for (f = 0; f < 200; ++f) {
+    for (f = 0; f < 240; ++f) {
         switch (f) {
         case 2: pga_set_tool(app, PGA_TOOL_BOX); pga_pointer_down(app, session_at(-8, 6)); break;
         case 4: pga_set_tool(app, PGA_TOOL_BALL); pga_pointer_down(app, session_at(-4, 7)); break;
@@ -57,6 +57,33 @@ static void app_session_run(pga_app *app)
         case 130: pga_step_once(app); break;
         case 140: pga_set_paused(app, 0); break;
         case 150: pga_set_selected_material(app, PG_FIX_C(2), PG_FIX_ONE / 4, PG_FIX_ONE / 2); break;
+        case 160: /* joints, made while paused so the clicks find the bodies where they were made */
+            pga_set_paused(app, 1);
+            pga_set_tool(app, PGA_TOOL_BALL);
+            pga_pointer_down(app, session_at(-14, 16));
+            pga_set_tool(app, PGA_TOOL_BOX);
+            pga_pointer_down(app, session_at(-10, 16));
+            break;
+        case 161:
+            pga_set_tool(app, PGA_TOOL_PIN); /* a pendulum about a point of the world */
+            pga_pointer_down(app, session_at(-14, 16));
+            pga_pointer_down(app, session_at(-14, 18));
+            pga_set_tool(app, PGA_TOOL_ROD);
+            pga_pointer_down(app, session_at(-14, 16));
+            pga_pointer_down(app, session_at(-10, 16));
+            pga_set_tool(app, PGA_TOOL_SPRING);
+            pga_pointer_down(app, session_at(-10, 16));
+            pga_pointer_down(app, session_at(-10, 19));
+            break;
+        case 162:
+            pga_set_tool(app, PGA_TOOL_MOVE); /* a mouse-joint drag of the box */
+            pga_pointer_down(app, session_at(-10, 16));
+            pga_pointer_move(app, session_at(-7, 14));
+            break;
+        case 163: pga_set_paused(app, 0); break;
+        case 190: pga_pointer_move(app, session_at(-8, 12)); break;
+        case 200: pga_pointer_up(app, session_at(-8, 12)); break;
+        case 215: pga_set_tool(app, PGA_TOOL_DELETE); pga_pointer_down(app, session_at(-14, 18)); break; /* the pin */
         default: break;
         }
         pga_frame(app);

@@ -13,6 +13,7 @@ static void test_recording_verifies(void **state)
     uint32_t played;
     (void)state;
     app_session_run(app);
+    assert_int_equal(pga_joint_count(app), 2); /* the rod and the spring; the pin was deleted, the drag let go */
     assert_int_equal(pga_recording(app, &rec, &size), PG_OK);
     copy = (uint8_t *)malloc(size);
     memcpy(copy, rec, size);

@@ -3,11 +3,12 @@
 #
 # Usage (CTest runs it inside xvfb-run): window_session.sh DESKTOP REPLAY_TOOL SCENE WORKDIR
 # Starts pogon-desktop on SCENE, then with xdotool: adds a ball and a box, selects the
-# ball with the move tool and drags it, pushes it with the arrow keys, toggles gravity
-# off and on, pauses, takes a screenshot (F12), steps once (N), takes another, and closes
-# the window (Escape). Then it checks that
+# ball with the move tool and drags it, pushes it with the arrow keys, pins the scene's
+# triangle to the world above it (tool 9), toggles gravity off and on, pauses, takes a
+# screenshot (F12), steps once (N), takes another, and closes the window (Escape). Then
+# it checks that
 #   - the replay the program wrote verifies (pogon-replay verify) and holds the adds,
-#     the drag and key pushes (set_linear_velocity / apply_force), the gravity toggles;
+#     the drag (a mouse joint) and key pushes, the pin, the gravity toggles;
 #   - the two screenshots are of consecutive frames (a single step while paused);
 #   - each screenshot shows the bodies where the replay has them at its frame
 #     (pogon-desktop --headless --play --until F --check-image).
@@ -35,6 +36,9 @@ act mousedown --window "$wid" 1; wait_for "Selected body"                       
 for x in -9.5 -9 -8.5 -8 -7.5 -7; do act mousemove --window "$wid" "$(px "$x")" "$(py 2)"; done
 act mouseup --window "$wid" 1
 act keydown --window "$wid" Right; sleep 0.5; act keyup --window "$wid" Right   # push the selected body
+act key --window "$wid" 9; wait_for "tool pin"                                   # tool 9: pin
+act mousemove --window "$wid" "$(px 2)" "$(py 0.3)" click 1; wait_for "Pin body" # the scene's triangle rests at (2, 0.35)
+act mousemove --window "$wid" "$(px 2)" "$(py 4)" click 1; wait_for "Pinned body"   # to the world 3.7 m above it
 act key --window "$wid" g; wait_for "Gravity off"
 sleep 0.5
 act key --window "$wid" g; wait_for "Gravity on"
@@ -52,11 +56,14 @@ grep -q "recorded [0-9]* frames to $file" "$log"
 "$replay" verify "$file"
 info=$("$replay" info "$file")
 count() { awk -v k="$1" '$1 == k { print $2 }' <<<"$info"; }
-makes=$(count make); grav=$(count set_gravity); vel=$(count set_linear_velocity); force=$(count apply_force)
-echo "make ${makes:-0}, set_gravity ${grav:-0}, set_linear_velocity ${vel:-0}, apply_force ${force:-0}"
+makes=$(count make); grav=$(count set_gravity); mouse=$(count create_mouse_joint); force=$(count apply_force)
+pins=$(count create_revolute_joint)
+echo "make ${makes:-0}, set_gravity ${grav:-0}, create_mouse_joint ${mouse:-0}, apply_force ${force:-0}, create_revolute_joint ${pins:-0}"
 [ "${makes:-0}" -ge 2 ] || { echo "FAIL: expected the ball and the box to be added (2 make commands)"; exit 1; }
 [ "${grav:-0}" -ge 2 ] || { echo "FAIL: expected gravity off and on (2 set_gravity commands)"; exit 1; }
-[ "$(( ${vel:-0} + ${force:-0} ))" -ge 1 ] || { echo "FAIL: expected the drag or the key push as commands"; exit 1; }
+[ "${mouse:-0}" -ge 1 ] || { echo "FAIL: expected the drag as a mouse joint"; exit 1; }
+[ "${force:-0}" -ge 1 ] || { echo "FAIL: expected the key push as apply_force"; exit 1; }
+[ "${pins:-0}" -ge 1 ] || { echo "FAIL: expected the pin as a revolute joint"; exit 1; }
 
 mapfile -t shots < <(sed -n 's/.*screenshot of frame \([0-9]*\) written to \(.*\)$/\1 \2/p' "$log")
 [ ${#shots[@]} -eq 2 ] || { echo "FAIL: expected 2 screenshots, got ${#shots[@]}"; exit 1; }

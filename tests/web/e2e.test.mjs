@@ -217,8 +217,55 @@ test('Move: drag a body with the mouse', async () => {
   await page.mouse.move(x1, y1, { steps: 10 });
   await frames(60);
   const held = (await bodies()).find((b) => b.index === placed.Star.index);
+  // a dynamic body is held by a mouse joint at the pressed point, whose target is the pointer
+  const joints = await hook(() => window.pogon.joints());
   await page.mouse.up();
   assert.ok(dist(held.center, target) < 0.5, `dragged to ${held.center}, pointer at ${target}`);
+  assert.equal(joints.length, 1, 'one joint while dragging');
+  assert.equal(joints[0].type, 4, 'a mouse joint');
+  assert.ok(dist(joints[0].a, target) < PX_TOLERANCE_M, `its target ${joints[0].a}, the pointer ${target}`);
+  await page.waitForFunction(() => window.pogon.jointCount() === 0); // released: gone
+});
+
+test('Pin, Rod and Spring: two clicks make each joint, drawn on the canvas; Delete removes one', async () => {
+  await button('Pause').click(); // no gravity and paused: the bodies stay where the clicks find them
+  await page.waitForFunction(() => window.pogon.paused());
+  const centre = async (name) => (await bodies()).find((b) => b.index === placed[name].index).center;
+  const join = async (name, first, second, count) => {
+    await tool(name);
+    await clickWorld(first);
+    await page.waitForFunction(() => window.pogon.pending().length === 1);
+    await clickWorld(second);
+    try {
+      await page.waitForFunction((n) => window.pogon.jointCount() === n, count);
+    } catch {
+      assert.fail(`${name} from ${first} to ${second} not made: ${await message()}`);
+    }
+  };
+  const triangle = await centre('Triangle'), capsule = await centre('Capsule'), box = await centre('Box');
+  const pivot = [triangle[0], triangle[1] + 2], anchorPoint = [capsule[0], capsule[1] + 3];
+  await join('Pin', triangle, pivot, 1); // a pendulum: the triangle pinned to the world 2 m up
+  await join('Rod', capsule, box, 2);
+  await tool('Spring');
+  await page.locator('#j-hertz').fill('2');
+  await page.waitForFunction(() => window.pogon.spring().hertz === 2);
+  await join('Spring', capsule, anchorPoint, 3); // the capsule hung from the world by a 2 Hz spring
+  const joints = await hook(() => window.pogon.joints());
+  const pin = joints.find((j) => j.type === 1), rod = joints.find((j) => j.type === 0 && !j.spring);
+  const spring = joints.find((j) => j.spring);
+  assert.ok(pin && rod && spring, JSON.stringify(joints));
+  assert.ok(dist(pin.b, pivot) < PX_TOLERANCE_M, `the pin at ${pin.b}, clicked at ${pivot}`);
+  assert.ok(dist(rod.a, capsule) < PX_TOLERANCE_M && dist(rod.b, box) < PX_TOLERANCE_M, `the rod ${rod.a} ${rod.b}`);
+  assert.ok(dist(spring.a, anchorPoint) < PX_TOLERANCE_M && dist(spring.b, capsule) < PX_TOLERANCE_M, 'the spring');
+  assert.equal(await page.locator('#stat-joints').textContent(), '3');
+  // drawn: the rod's colour halfway between the capsule and the box, where no body is
+  const middle = [(capsule[0] + box[0]) / 2, (capsule[1] + box[1]) / 2];
+  assert.equal(hexColor(await pixel(middle)), hexColor(rod.color));
+  await tool('Delete');
+  await clickWorld([middle[0], middle[1] + 0.1]); // near the rod: the joint goes, not a body
+  await page.waitForFunction(() => window.pogon.jointCount() === 2);
+  assert.match(await message(), /^Deleted joint \d+ \(a rod\)/);
+  await button('Start').click();
 });
 
 test('new bodies take the restitution slider: a bouncy ball bounces, a dead one does not', async () => {
@@ -462,16 +509,30 @@ test('the scene picker offers every file of scenes/ and loads each', async () =>
 });
 
 test('the screenshot for the README', async () => {
-  // the pile scene with a body of each one-click kind dropped on it
+  // the pile scene with a body of each one-click kind dropped on it, two of them on joints
   await page.locator('#scene').selectOption('scenes/pile.scene');
   await page.waitForFunction(() => window.pogon.sceneName() === 'pile');
   await frames(90);
   const colors = { Box: '#1c7ed6', Star: '#f59f00', Capsule: '#37b24d', Ball: '#e03131' };
   await page.locator('#p-nudge').check();
+  const dropped = {};
   for (const [i, name] of ['Box', 'Star', 'Capsule', 'Ball'].entries()) {
-    await add(name, [[-4.5 + 3 * i, 13]], colors[name]);
+    dropped[name] = await add(name, [[-4.5 + 3 * i, 13]], colors[name]);
   }
   await page.locator('#p-nudge').uncheck();
+  // and joints: the ball on a pin 3 m to its left (a pendulum), the box hung from a spring
+  await button('Pause').click();
+  await page.waitForFunction(() => window.pogon.paused());
+  const now = async (name) => (await bodies()).find((b) => b.index === dropped[name].index).center;
+  const joints = await hook(() => window.pogon.jointCount());
+  const ball = await now('Ball'), box = await now('Box');
+  for (const [name, from, to] of [['Pin', ball, [ball[0] - 3, ball[1]]], ['Spring', box, [box[0], box[1] + 3]]]) {
+    await tool(name);
+    await clickWorld(from);
+    await clickWorld(to);
+  }
+  await page.waitForFunction((n) => window.pogon.jointCount() === n + 2, joints);
+  await button('Start').click();
   await tool('Move');
   await frames(40);
   const path = join(opt.out, 'demo.png');

@@ -1,4 +1,5 @@
-// controls.js — DOM events to app calls: tool buttons, sliders, the simulation buttons,
+// controls.js — DOM events to app calls: tool buttons, sliders (new bodies, new springs),
+// the simulation buttons,
 // effect switches, keys and the pointer on the canvas. Nothing here decides what an
 // input means; the app does (ports/app). What the page shows of the outcome is
 // refreshed from the app each display frame by status.js.
@@ -34,6 +35,11 @@ function showValue(input) {
 
 // Put the app's parameters into the sliders (after a refusal they snap back).
 export function showParams(engine) {
+  const spring = engine.spring();
+  $('j-hertz').value = spring.hertz;
+  $('j-damping').value = spring.damping;
+  showValue($('j-hertz'));
+  showValue($('j-damping'));
   const p = engine.params();
   for (const name of PARAMS) {
     const input = $(`p-${name}`);
@@ -70,6 +76,17 @@ export function bindControls(engine, view, canvas, pointerState) {
   }
   $('p-color').addEventListener('change', (e) => { sendParams(); refocus(canvas, e.target); });
   $('p-nudge').addEventListener('change', (e) => { sendParams(); refocus(canvas, e.target); });
+
+  // ---- the spring tool's frequency and damping ratio ----
+  for (const id of ['j-hertz', 'j-damping']) {
+    const input = $(id);
+    input.addEventListener('input', () => {
+      const r = engine.setSpring(Number($('j-hertz').value), Number($('j-damping').value));
+      if (r !== 0) say(engine.message() || engine.resultName(r));
+      showParams(engine);
+    });
+    input.addEventListener('change', () => refocus(canvas, input));
+  }
 
   // ---- the selected body's material ----
   for (const name of ['density', 'friction', 'restitution']) {

@@ -10,7 +10,10 @@ export const toFix = (metres) => Math.round(metres * FIX_ONE);
 export const fromFix = (fix) => fix / FIX_ONE;
 const TURN = 4294967296;
 
-export const TOOL = Object.freeze({ MOVE: 0, DELETE: 1, BALL: 2, CAPSULE: 3, BOX: 4, TRIANGLE: 5, STAR: 6, WALL: 7 });
+export const TOOL = Object.freeze({
+  MOVE: 0, DELETE: 1, BALL: 2, CAPSULE: 3, BOX: 4, TRIANGLE: 5, STAR: 6, WALL: 7, PIN: 8, ROD: 9, SPRING: 10,
+});
+export const JOINT = Object.freeze({ DISTANCE: 0, REVOLUTE: 1, WELD: 2, PRISMATIC: 3, MOUSE: 4 });
 export const KEY = Object.freeze({ LEFT: 0, RIGHT: 1, UP: 2, DOWN: 3, SPIN_CCW: 4, SPIN_CW: 5 });
 export const SHAPE = Object.freeze({ CIRCLE: 0, SEGMENT: 1, CAPSULE: 2, POLYGON: 3 });
 export const DRAW = Object.freeze({ SELECTED: 1, STATIC: 2, ASLEEP: 4, KINEMATIC: 8 });
@@ -31,6 +34,8 @@ class Engine {
       size: L(0), index: L(1), generation: L(2), kind: L(3), count: L(4),
       vertices: L(5), radius: L(6), color: L(7), flags: L(8), vec2: L(9),
     };
+    const J = (i) => module._pgw_joint_layout(i);
+    this.jointLayout = { size: J(0), type: J(1), spring: J(2), a: J(3), b: J(4), originA: J(5), originB: J(6), color: J(7) };
   }
 
   // ---- strings and bytes across the boundary ----
@@ -65,6 +70,11 @@ class Engine {
     p.nudge = this.m._pgw_param(7, defaults ? 1 : 0) !== 0;
     return p;
   }
+  // the spring tool's {hertz, damping}
+  spring(defaults = false) {
+    return { hertz: fromFix(this.m._pgw_param(8, defaults ? 1 : 0)), damping: fromFix(this.m._pgw_param(9, defaults ? 1 : 0)) };
+  }
+  setSpring(hertz, damping) { return this.m._pgw_set_spring(toFix(hertz), toFix(damping)); }
   setParams(p) {
     return this.m._pgw_set_params(toFix(p.radius), toFix(p.width), toFix(p.height), toFix(p.density),
       toFix(p.friction), toFix(p.restitution), p.color >>> 0, p.nudge ? 1 : 0);
@@ -148,6 +158,26 @@ class Engine {
     }
     return shapes;
   }
+  // Every joint: {type, spring, a, b, originA, originB: [x, y] metres, color}
+  jointList() {
+    const base = this.m._pgw_draw_joints();
+    const count = this.m._pgw_joint_draw_count() >>> 0;
+    const L = this.jointLayout;
+    const heap = this.m.HEAP32;
+    const point = (s, offset) => [heap[s + (offset >> 2)] / FIX_ONE, heap[s + (offset >> 2) + 1] / FIX_ONE];
+    const joints = new Array(count);
+    for (let i = 0; i < count; ++i) {
+      const s = (base + i * L.size) >> 2;
+      joints[i] = {
+        type: heap[s + (L.type >> 2)],
+        spring: heap[s + (L.spring >> 2)] !== 0,
+        a: point(s, L.a), b: point(s, L.b), originA: point(s, L.originA), originB: point(s, L.originB),
+        color: heap[s + (L.color >> 2)] >>> 0,
+      };
+    }
+    return joints;
+  }
+  jointCount() { return this.m._pgw_joint_count() >>> 0; }
   pendingPoints() {
     const base = this.m._pgw_pending_points();
     const count = this.m._pgw_pending_count() >>> 0;

@@ -39,7 +39,7 @@ async function main() {
     stepHz: () => engine.stepHz(),
     tick,
     draw: () => {
-      renderer.draw(engine.drawList(), (s) => engine.bodyAngle(s), engine.pendingPoints(), notes.world);
+      renderer.draw(engine.drawList(), (s) => engine.bodyAngle(s), engine.pendingPoints(), notes.world, engine.jointList());
       readout.update();
     },
   });

@@ -1,9 +1,9 @@
-// render.js — draws what the app says (its draw list and pending clicks) on a 2D canvas.
+// render.js — draws what the app says (its draw list, joints and pending clicks) on a 2D canvas.
 //
 // Fills carry each body's own colour unchanged, whatever its state, so a pixel inside a
 // body is that body's colour (the end-to-end test reads them); state shows in outlines:
 // the selected body thick and orange, sleeping bodies dashed, static ones dark.
-import { SHAPE, DRAW } from './engine.js';
+import { SHAPE, DRAW, JOINT } from './engine.js';
 
 export const BACKGROUND = '#fbfaf7';
 const SELECTED = '#d9480f';
@@ -32,8 +32,9 @@ export class Renderer {
   }
 
   // shapes: engine.drawList(); angleOf(shape): a circle's angle (radians) for its spoke;
-  // pending: points of an unfinished triangle or wall; pointer: the world point under the mouse or null.
-  draw(shapes, angleOf, pending, pointer) {
+  // pending: points of an unfinished triangle, wall or joint; pointer: the world point under
+  // the mouse or null; joints: engine.jointList().
+  draw(shapes, angleOf, pending, pointer, joints = []) {
     const { ctx, view } = this;
     this.resize();
     ctx.fillStyle = BACKGROUND;
@@ -58,7 +59,65 @@ export class Renderer {
     ctx.lineWidth = 1;
     ctx.strokeStyle = OUTLINE;
     ctx.stroke();
+    for (const j of joints) this.joint(j);
     this.pending(pending, pointer);
+  }
+
+  // Over the bodies, in the app's colour by kind: a pin a ringed dot with thin arms from
+  // the bodies' origins, a rod a line, a spring a zigzag, a drag a thin line to a ring at
+  // the pointer; a rod's and a spring's ends are dots.
+  joint(j) {
+    const { ctx, view } = this;
+    const colour = hex(j.color);
+    const [ax, ay] = view.toScreen(...j.a);
+    const [bx, by] = view.toScreen(...j.b);
+    const dot = (x, y, r, fill) => { ctx.beginPath(); ctx.arc(x, y, r, 0, 2 * Math.PI); ctx.fillStyle = fill; ctx.fill(); };
+    ctx.setLineDash([]);
+    ctx.strokeStyle = colour;
+    ctx.beginPath();
+    if (j.type === JOINT.REVOLUTE) {
+      for (const o of [j.originA, j.originB]) {
+        const [ox, oy] = view.toScreen(...o);
+        ctx.moveTo(ox, oy);
+        ctx.lineTo(bx, by);
+      }
+      ctx.lineWidth = 1;
+      ctx.stroke();
+      dot(bx, by, 5, colour);
+      dot(bx, by, 2, '#ffffff');
+    } else if (j.type === JOINT.MOUSE) {
+      ctx.moveTo(bx, by);
+      ctx.lineTo(ax, ay);
+      ctx.lineWidth = 1;
+      ctx.stroke();
+      ctx.beginPath();
+      ctx.arc(ax, ay, 4, 0, 2 * Math.PI);
+      ctx.stroke();
+      dot(bx, by, 2, colour);
+    } else {
+      if (j.type === JOINT.DISTANCE && j.spring) this.zigzag(ax, ay, bx, by);
+      else { ctx.moveTo(ax, ay); ctx.lineTo(bx, by); }
+      ctx.lineWidth = j.type === JOINT.DISTANCE && !j.spring ? 3 : 2;
+      ctx.stroke();
+      dot(ax, ay, 3, colour);
+      dot(bx, by, 3, colour);
+    }
+  }
+
+  // Teeth 5 px to each side, about one per 6 px of length; added to the current path.
+  zigzag(ax, ay, bx, by) {
+    const { ctx } = this;
+    const dx = bx - ax, dy = by - ay, len = Math.hypot(dx, dy);
+    ctx.moveTo(ax, ay);
+    if (len >= 1) {
+      const n = Math.min(60, Math.max(4, Math.floor(len / 6)));
+      const nx = (-dy / len) * 5, ny = (dx / len) * 5;
+      for (let i = 1; i <= n; ++i) {
+        const t = i / (n + 1), side = i % 2 ? 1 : -1;
+        ctx.lineTo(ax + dx * t + nx * side, ay + dy * t + ny * side);
+      }
+    }
+    ctx.lineTo(bx, by);
   }
 
   fillAndStroke(group, px, selected) {

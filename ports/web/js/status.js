@@ -1,5 +1,5 @@
 // status.js — what the page shows of the app's state, refreshed each display frame:
-// the numbers (bodies, ms per step, frame, state hash, gravity), the active tool and
+// the numbers (bodies, joints, ms per step, frame, state hash, gravity), the active tool and
 // the panels it uses, the effect switches, the run button, the selected body, the
 // message, and the playback panel. Reads only; never calls into the app's input.
 import { showSelected } from './controls.js';
@@ -9,13 +9,16 @@ const fmt = (v, digits = 2) => (Math.abs(v) < 0.5 * 10 ** -digits ? 0 : v).toFix
 
 const TOOL_HINTS = [
   'Click a body to select it; drag it; W A S D / arrows push, Q E spin.',
-  'Click a body to remove it.',
+  'Click a body to remove it, or near a joint to remove the joint.',
   'Click to place a ball.',
   'Click to place a capsule.',
   'Click to place a box.',
   'Click three times: the triangle\'s corners.',
   'Click to place a star.',
   'Click twice: the wall\'s two ends.',
+  'Click the body to pin, then where the pin goes: on another body, or anywhere else for the world.',
+  'Click two points: a rigid rod between them (on two bodies, or a body and the world).',
+  'Click two points: a spring between them (on two bodies, or a body and the world).',
 ];
 
 function setText(id, text) {
@@ -39,6 +42,7 @@ export class Status {
     const { engine } = this;
     const ms = this.loop.msPerStep();
     setText('stat-bodies', String(engine.bodyCount()));
+    setText('stat-joints', String(engine.jointCount()));
     setText('stat-awake', String(engine.awakeCount()));
     setText('stat-ms', ms === null ? '–' : ms.toFixed(3));
     setText('effects-ms', ms === null ? '–' : ms.toFixed(3));
@@ -140,7 +144,7 @@ export class Status {
   playback() {
     const p = this.engine.playback();
     $('playback').hidden = !p.active;
-    for (const id of ['tools', 'params', 'selected', 'sim', 'effects']) $(id).disabled = p.active;
+    for (const id of ['tools', 'params', 'spring', 'selected', 'sim', 'effects']) $(id).disabled = p.active;
     if (!p.active) {
       this.marks = null;
       return;

@@ -17,6 +17,9 @@ export function installTestHook(engine, view, loop) {
   window.pogon = Object.freeze({
     bodies,
     bodyCount: () => engine.bodyCount(),
+    jointCount: () => engine.jointCount(),
+    joints: () => engine.jointList(),
+    spring: () => engine.spring(),
     awakeCount: () => engine.awakeCount(),
     frame: () => engine.frameNumber(),
     hash: () => engine.stateHash(),
