@@ -171,6 +171,10 @@ static int kind_problem(const pg_command *c, text *t)
     return 0;
 }
 
+/* A chain segment's geometry has its two vertices and, after them, its neighbours
+ * (pg_geometry_chain_segment), which its encoding carries after the vertices. */
+static int chain_count_ok(const pg_geometry *g) { return g->kind != PG_SHAPE_CHAIN_SEGMENT || g->count == 2; }
+
 /* kind_problem and the rest of what pg_command_encode refuses: a command with no
  * encoding, which no world can apply (and no replay can record). */
 static int command_problem(const pg_command *c, text *t)
@@ -184,12 +188,18 @@ static int command_problem(const pg_command *c, text *t)
         put_text(t, " is outside 0..8");
         return 1;
     }
-    if ((f & F_GEOMETRY) != 0 && (unsigned)c->geometry.kind > (unsigned)PG_SHAPE_POLYGON) {
+    if ((f & F_GEOMETRY) != 0 && (unsigned)c->geometry.kind > (unsigned)PG_SHAPE_CHAIN_SEGMENT) {
         put_text(t, "add_shape command's geometry.kind ");
         put_int(t, enum_value((uint32_t)c->geometry.kind));
         put_text(t, " is not a PG_SHAPE_* value (0..");
-        put_int(t, PG_SHAPE_POLYGON);
+        put_int(t, PG_SHAPE_CHAIN_SEGMENT);
         put_text(t, ")");
+        return 1;
+    }
+    if ((f & F_GEOMETRY) != 0 && !chain_count_ok(&c->geometry)) {
+        put_text(t, "add_shape command's chain segment has geometry.count ");
+        put_int(t, c->geometry.count);
+        put_text(t, ", not 2 (its neighbours are vertices[2] and [3])");
         return 1;
     }
     if ((f & F_BODY_DEF) != 0 && (unsigned)c->body_def.type > (unsigned)PG_BODY_DYNAMIC) {
@@ -362,7 +372,8 @@ size_t pg_command_encode(const pg_command *c, uint8_t *buffer, size_t capacity)
     if (c == NULL || buffer == NULL || (unsigned)c->kind >= PG_CMD_KIND_COUNT || c->kind == PG_CMD_NONE) return 0;
     /* refuse what decode would refuse, so every encoding decodes */
     if ((kind_fields[c->kind] & F_GEOMETRY) != 0 &&
-        (c->geometry.count < 0 || c->geometry.count > PG_MAX_VERTICES || (unsigned)c->geometry.kind > (unsigned)PG_SHAPE_POLYGON))
+        (c->geometry.count < 0 || c->geometry.count > PG_MAX_VERTICES ||
+         (unsigned)c->geometry.kind > (unsigned)PG_SHAPE_CHAIN_SEGMENT || !chain_count_ok(&c->geometry)))
         return 0;
     if ((kind_fields[c->kind] & F_MAKE) != 0 && (unsigned)c->make_kind >= PG_MAKE_KIND_COUNT) return 0;
     if ((kind_fields[c->kind] & F_BODY_DEF) != 0 && (unsigned)c->body_def.type > (unsigned)PG_BODY_DYNAMIC) return 0;
@@ -411,6 +422,10 @@ size_t pg_command_encode(const pg_command *c, uint8_t *buffer, size_t capacity)
         put_u8(&w, (uint32_t)c->geometry.kind);
         put_u8(&w, (uint32_t)c->geometry.count);
         for (i = 0; i < c->geometry.count; ++i) put_vec(&w, c->geometry.vertices[i]);
+        if (c->geometry.kind == PG_SHAPE_CHAIN_SEGMENT) { /* its neighbours, before then after */
+            put_vec(&w, c->geometry.vertices[2]);
+            put_vec(&w, c->geometry.vertices[3]);
+        }
         put_i32(&w, c->geometry.radius);
     }
     if (f & F_JOINT_DEF) put_joint_def(&w, c);
@@ -612,11 +627,15 @@ pg_result pg_command_decode(const uint8_t *buffer, size_t size, pg_command *c, s
     if (f & F_GEOMETRY) {
         at = r.pos;
         c->geometry.kind = (pg_shape_kind)get_u8(&r, "command.geometry.kind");
-        if ((unsigned)c->geometry.kind > (unsigned)PG_SHAPE_POLYGON) bad(&r, at, "command.geometry.kind");
+        if ((unsigned)c->geometry.kind > (unsigned)PG_SHAPE_CHAIN_SEGMENT) bad(&r, at, "command.geometry.kind");
         at = r.pos;
         c->geometry.count = (int32_t)get_u8(&r, "command.geometry.count");
-        if (c->geometry.count > PG_MAX_VERTICES) bad(&r, at, "command.geometry.count");
+        if (c->geometry.count > PG_MAX_VERTICES || !chain_count_ok(&c->geometry)) bad(&r, at, "command.geometry.count");
         for (i = 0; r.error_field == NULL && i < c->geometry.count; ++i) c->geometry.vertices[i] = get_vec(&r, "command.geometry.vertex");
+        if (r.error_field == NULL && c->geometry.kind == PG_SHAPE_CHAIN_SEGMENT) {
+            c->geometry.vertices[2] = get_vec(&r, "command.geometry.neighbour");
+            c->geometry.vertices[3] = get_vec(&r, "command.geometry.neighbour");
+        }
         c->geometry.radius = get_i32(&r, "command.geometry.radius");
     }
     if (f & F_JOINT_DEF) get_joint_def(&r, c);

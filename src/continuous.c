@@ -331,6 +331,14 @@ void pg__sweep_fast_turns(pg_world *w, pg_sweep *sweeps, uint32_t n, uint32_t *s
             continue;
         }
         if (!pg__shapes_should_collide(w, sa, sb)) continue;
+        /* a chain segment is solid on its front only, and its own contacts push out a
+         * body whose centre of mass stays in front: only a centre that crosses it from
+         * the front needs the sweep (Box2D v3's rule). A body coming from behind passes
+         * through, and one stopped mid-crossing would be thrown out by those contacts. */
+        if (w->shapes[other_shape].geometry.kind == PG_SHAPE_CHAIN_SEGMENT &&
+            (pg_geom_behind_segment(&w->world_geoms[other_shape], sweeps[k].c0) ||
+             pg_geom_in_front_of_segment(&w->world_geoms[other_shape], sweeps[k].c1)))
+            continue;
         t = shape_against_static(w, &sweeps[k], shape, &w->world_geoms[other_shape], &held, &hold);
         if (held) {
             /* the core may not go in: the step's path loses its part along the normal (the

@@ -146,6 +146,18 @@ pg_vec2 pg_geom_place_point(pg_vec2 local, pg_vec2 position, pg_rot rotation)
                  pg__sat64((int64_t)position.y + pg__sat64(pg__rot_y(rotation, local.x, local.y))));
 }
 
+/* How far p lies in front of a segment's face normals[0], Q46 (negative: behind). */
+static int64_t segment_offset(const pg_geom *g, pg_vec2 p)
+{
+    /* differences of Q16.16 values (below 2^32) times a Q2.30 normal: below 2^63 summed */
+    int64_t dx = (int64_t)p.x - g->vertices[0].x, dy = (int64_t)p.y - g->vertices[0].y;
+    return dx * g->normals[0].x + dy * g->normals[0].y;
+}
+
+int pg_geom_behind_segment(const pg_geom *g, pg_vec2 p) { return segment_offset(g, p) < 0; }
+
+int pg_geom_in_front_of_segment(const pg_geom *g, pg_vec2 p) { return segment_offset(g, p) > 0; }
+
 void pg_geom_transform(const pg_geom *local, pg_vec2 position, pg_rot rotation, pg_geom *world)
 {
     place(local, position, rotation, world);

@@ -42,4 +42,11 @@ void pg__geom_place_slot(const pg_geom *local, pg_vec2 position, pg_rot rotation
 /* The bounding box of a placed geometry, radius included. */
 pg_aabb pg_geom_aabb(const pg_geom *g);
 
+/* Whether p lies strictly behind the face normals[0] of a segment (two vertices, as a
+ * chain segment is placed): its back side, where a one-sided chain segment is not
+ * solid. A point on the segment's line is not behind. */
+int pg_geom_behind_segment(const pg_geom *g, pg_vec2 p);
+/* Whether p lies strictly in front of it (a point on the line is neither). */
+int pg_geom_in_front_of_segment(const pg_geom *g, pg_vec2 p);
+
 #endif

@@ -232,6 +232,9 @@ pg_result pg_world_raycast(const pg_world *w, pg_vec2 origin, pg_vec2 translatio
         if (!w->shapes[s].used) continue;
         shape_world_geom(w, s, &g);
         if (!boxes_overlap(pg_geom_aabb(&g), ray_box)) continue; /* see RANGE above */
+        /* a chain segment is one-sided for rays as for contacts (as in Box2D v3): a ray
+         * from behind it passes through */
+        if (w->shapes[s].geometry.kind == PG_SHAPE_CHAIN_SEGMENT && pg_geom_behind_segment(&g, origin)) continue;
         if (pg_geom_raycast(&g, origin, translation, best, &t, &point, &normal) && (!found || t < best)) {
             const pg_shape *sh = &w->shapes[s];
             found = 1;

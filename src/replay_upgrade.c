@@ -9,7 +9,8 @@
 #include "pogon/replay_file.h"
 #include "text.h"
 
-/* Format 1: the format 2 header without numeric_config (docs/formats.md keeps both). */
+/* Format 1: the format 2 header without numeric_config (docs/formats.md keeps both);
+ * formats 3 and 4 have format 2's header. */
 enum {
     V1_HEADER_HASH = 32, /* bytes 0..31 */
     V1_HEADER_SIZE = 40,
@@ -88,12 +89,14 @@ static pg_result upgrade_1_to_2(const uint8_t *in, size_t size, uint32_t numeric
     return PG_OK;
 }
 
-/* Format 2 -> 3: the joint commands (kinds 24..33) are new, every format 2 record reads
- * the same in format 3: the header's version changes, so its hash and the checksum do.
- * Runs on `out` in place, after the format 2 file's own hashes were checked. */
-static void upgrade_2_to_3(uint8_t *out, size_t size)
+/* Format 2 -> 3 -> 4: format 3 brought the joint commands (kinds 24..33), format 4 chain
+ * segments in add_shape commands (geometry kind 4, its neighbours after its vertices).
+ * Every format 2 or 3 record reads the same in format 4: only the header's version
+ * changes, so its hash and the checksum do. Runs on `out` in place, after the old file's
+ * own hashes were checked. */
+static void restamp_version(uint8_t *out, size_t size)
 {
-    put_u16(out + 8, 3u);
+    put_u16(out + 8, PG_REPLAY_FORMAT_VERSION);
     put_u64(out + V2_HEADER_HASH, pg_hash_bytes(PG_HASH_SEED, out, V2_HEADER_HASH));
     put_u64(out + size - 8u, pg_hash_bytes(PG_HASH_SEED, out, size - 8u));
 }
@@ -134,15 +137,14 @@ pg_result pg_replay_upgrade(const uint8_t *data, size_t size, uint32_t numeric_c
             return r;
         }
     } else {
-        if (version == 2u && !v2_hashes_sound(data, size)) {
+        if (version < PG_REPLAY_FORMAT_VERSION && !v2_hashes_sound(data, size)) {
             if (out_size != NULL) *out_size = 0;
-            return fail(error, PG_ERR_INVALID_ARGUMENT, V2_HEADER_HASH, "header_hash",
-                        "header hash or file checksum mismatch in a format 2 file (header bytes 0..", V2_HEADER_HASH - 1,
-                        ", checksum in the last 8 bytes): the file is damaged");
+            return fail(error, PG_ERR_INVALID_ARGUMENT, V2_HEADER_HASH, "header_hash", "header hash or file checksum mismatch in a format ",
+                        version, " file (header bytes 0..35, checksum in the last 8 bytes): the file is damaged");
         }
         copy_bytes(out, data, size);
     }
-    if (version <= 2u) upgrade_2_to_3(out, need);
+    if (version < PG_REPLAY_FORMAT_VERSION) restamp_version(out, need);
     /* the rest of the file (scene, records, block hashes), as the current reader sees it */
     r = pg_replay_read(out, need, &info, &inner);
     if (r == PG_ERR_INVALID_ARGUMENT || r == PG_ERR_NULL) {

@@ -43,7 +43,7 @@ extern "C" {
 #endif
 
 #define PG_REPLAY_MAGIC "PGREPLAY"          /**< 8 bytes, no terminator in the file */
-#define PG_REPLAY_FORMAT_VERSION 3u         /**< the format version this build writes and reads
+#define PG_REPLAY_FORMAT_VERSION 4u         /**< the format version this build writes and reads
                                                  (pg_replay_upgrade converts older ones) */
 #define PG_REPLAY_HEADER_SIZE 44u           /**< fixed header, hash included */
 #define PG_REPLAY_TRAILER_SIZE 29u          /**< the end record: tag, frames, final hash, block hash, checksum */

@@ -72,6 +72,16 @@ static inline double pgt_rot_angle_error(void)
         }                                                                                  \
     } while (0)
 
+#define PG_EXPECT_GE(got, bound, fmt, ...)                                                  \
+    do {                                                                                   \
+        double pgt_g_ = (double)(got), pgt_b_ = (double)(bound);                           \
+        if (!(pgt_g_ >= pgt_b_)) {                                                         \
+            print_error("%s == %.9g, below the bound %.9g (%s); " fmt "\n", #got, pgt_g_,  \
+                        pgt_b_, #bound, __VA_ARGS__);                                      \
+            fail();                                                                        \
+        }                                                                                  \
+    } while (0)
+
 /* ---- deterministic PRNG ------------------------------------------------------------ */
 typedef struct pgt_rng { uint64_t s; } pgt_rng;
 

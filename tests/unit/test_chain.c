@@ -18,6 +18,8 @@
 #include "pg_test.h"
 #include "pg_test_world.h"
 
+#include <stdio.h>
+
 #include "pogon/replay.h"
 
 #define SEGMENTS 20
@@ -170,6 +172,107 @@ static void test_chain_is_one_sided(void **state)
     free_world(&t);
 }
 
+/* A ray is stopped by a chain segment only from its front (Box2D v3 casts rays at chain
+ * segments one-sided too): from above it hits the flat chain with the normal up, from
+ * below it passes through and finds nothing, where a plain segment in the same place is
+ * hit from below (so the test can fail). Queries by point and box stay two-sided. */
+static void test_rays_are_one_sided(void **state)
+{
+    test_world t = chain_world();
+    pg_body_def bd = pg_default_body_def();
+    pg_shape_def sd = pg_default_shape_def();
+    pg_vec2 pts[SEGMENTS + 1];
+    pg_body_id ground, plain, found[4];
+    pg_ray_hit hit;
+    pg_geometry seg;
+    pg_shape_id shape;
+    pg_aabb box;
+    uint32_t n = 0;
+    (void)state;
+    terrain(pts, 0);
+    assert_int_equal(pg_make_chain(t.w, &bd, &sd, pts, SEGMENTS + 1, 0, &ground), PG_OK);
+    assert_int_equal(pg_world_raycast(t.w, pg_v2(fx(0.5), fx(2)), pg_v2(0, fx(-4)), &hit), PG_OK);
+    assert_true(hit.body.index == ground.index);
+    PG_EXPECT_EQ(hit.point.y, 0, "%s", "the ray from above stops on the chain");
+    PG_EXPECT_EQ(hit.normal.y, PG_FIX_ONE, "%s", "with the chain's normal");
+    PG_EXPECT_EQ(hit.fraction, PG_FIX_HALF, "%s", "");
+    assert_int_equal(pg_world_raycast(t.w, pg_v2(fx(0.5), fx(-2)), pg_v2(0, fx(4)), &hit), PG_ERR_NOT_FOUND);
+    /* from below, slanted across two joints: still nothing */
+    assert_int_equal(pg_world_raycast(t.w, pg_v2(fx(-3), fx(-1)), pg_v2(fx(6), fx(2)), &hit), PG_ERR_NOT_FOUND);
+    /* a two-sided segment 1 m lower is hit from below */
+    bd.position = pg_v2(0, fx(-1));
+    assert_int_equal(pg_body_create(t.w, &bd, &plain), PG_OK);
+    assert_int_equal(pg_geometry_segment(pg_v2(fx(-5), 0), pg_v2(fx(5), 0), &seg), PG_OK);
+    assert_int_equal(pg_shape_create(t.w, plain, &sd, &seg, &shape), PG_OK);
+    assert_int_equal(pg_world_raycast(t.w, pg_v2(fx(0.5), fx(-2)), pg_v2(0, fx(4)), &hit), PG_OK);
+    assert_true(hit.body.index == plain.index);
+    PG_EXPECT_EQ(hit.point.y, fx(-1), "%s", "the plain segment is hit from below");
+    /* a box across the chain's line finds it from either side */
+    box.lo = pg_v2(fx(0.25), fx(-0.5));
+    box.hi = pg_v2(fx(0.75), fx(0.01));
+    assert_int_equal(pg_world_query_aabb(t.w, box, found, 4, &n), PG_OK);
+    PG_EXPECT_EQ(n, 1, "%s", "the chain, found by a box mostly behind it");
+    assert_true(found[0].index == ground.index);
+    free_world(&t);
+}
+
+/* Continuous collision: a thin plank spinning fast enough for the sweep of continuous.c
+ * (a 1 m x 0.1 m plank at 200 rad/s moves its ends 100 m/s, far more than half its
+ * thickness a step), thrown up at 10 m/s without gravity from 2 m below the chain,
+ * passes through it: exactly as with continuous collision off, 5 m up in 0.5 s but for
+ * less than 0.03 m that the chain's contacts push it while its centre crosses, its
+ * speed and spin kept. (Stopped at the chain's back, where the sweep of a two-sided
+ * segment put it, it stayed there.) Thrown down from 2 m above, its centre never gets
+ * behind the chain. */
+typedef struct plank_run { double end_y, lowest_y, end_vy, end_w; } plank_run;
+
+static plank_run spinning_plank(double y0, double vy, int continuous)
+{
+    test_world t = chain_world();
+    pg_body_def bd = pg_default_body_def();
+    pg_shape_def sd = pg_default_shape_def();
+    pg_vec2 pts[SEGMENTS + 1];
+    pg_body_id ground, plank;
+    pg_body_def b = dynamic_at(0.3, y0);
+    plank_run r;
+    int i;
+    terrain(pts, 0);
+    assert_int_equal(pg_make_chain(t.w, &bd, &sd, pts, SEGMENTS + 1, 0, &ground), PG_OK);
+    if (!continuous) assert_int_equal(pg_world_set_effects(t.w, pg_world_effects(t.w) & ~PG_EFFECT_CONTINUOUS), PG_OK);
+    b.linear_velocity = pg_v2(0, fx(vy));
+    b.angular_velocity = fx(200);
+    b.gravity_scale = 0;
+    assert_int_equal(pg_make_box(t.w, &b, &sd, fx(1), fx(0.1), &plank), PG_OK);
+    r.lowest_y = y0;
+    for (i = 0; i < 30; ++i) {
+        double y;
+        assert_int_equal(pg_world_step(t.w), PG_OK);
+        y = fd(pg_body_position(t.w, plank).y);
+        if (y < r.lowest_y) r.lowest_y = y;
+    }
+    r.end_y = fd(pg_body_position(t.w, plank).y);
+    r.end_vy = fd(pg_body_linear_velocity(t.w, plank).y);
+    r.end_w = fd(pg_body_angular_velocity(t.w, plank));
+    free_world(&t);
+    return r;
+}
+
+static void test_continuous_passes_from_behind(void **state)
+{
+    plank_run up, off, down;
+    (void)state;
+    up = spinning_plank(-2.0, 10.0, 1);
+    off = spinning_plank(-2.0, 10.0, 0);
+    down = spinning_plank(2.0, -10.0, 1);
+    printf("spinning plank from below: ends at y = %.4f m, %.4f m/s, %.3f rad/s; from above: lowest y = %.4f m\n", up.end_y,
+           up.end_vy, up.end_w, down.lowest_y);
+    PG_EXPECT_LE(fabs(up.end_y - off.end_y), 0.0, "%s", "continuous collision changes nothing from behind");
+    PG_EXPECT_LE(fabs(up.end_y - 3.0), 0.03, "%s", "from behind the chain does not stop it");
+    PG_EXPECT_LE(fabs(up.end_vy - 10.0), 0.001, "%s", "nor slow it");
+    PG_EXPECT_LE(fabs(up.end_w - 200.0), 0.001, "%s", "nor its spin");
+    PG_EXPECT_GE(down.lowest_y, 0.0, "%s", "from the front its centre stays in front");
+}
+
 static void test_loop_holds_a_ball(void **state)
 {
     /* a clockwise square loop (free space inside): a ball dropped inside stays inside */
@@ -283,6 +386,8 @@ int main(void)
         cmocka_unit_test(test_bent_chain_has_no_bumps),
         cmocka_unit_test(test_ball_rolls_across_joints),
         cmocka_unit_test(test_chain_is_one_sided),
+        cmocka_unit_test(test_rays_are_one_sided),
+        cmocka_unit_test(test_continuous_passes_from_behind),
         cmocka_unit_test(test_loop_holds_a_ball),
         cmocka_unit_test(test_chain_refusals),
         cmocka_unit_test(test_neighbours_in_state),

@@ -140,6 +140,10 @@ static void ref_encode(const pg_command *c, ref_enc *e)
         ref_put(e, (uint32_t)c->geometry.kind, 1, "geometry.kind");
         ref_put(e, (uint32_t)c->geometry.count, 1, "geometry.count");
         for (i = 0; i < c->geometry.count; ++i) ref_vec(e, c->geometry.vertices[i], "geometry.vertex");
+        if (c->geometry.kind == PG_SHAPE_CHAIN_SEGMENT) {
+            ref_vec(e, c->geometry.vertices[2], "geometry.neighbour");
+            ref_vec(e, c->geometry.vertices[3], "geometry.neighbour");
+        }
         ref_put(e, (uint32_t)c->geometry.radius, 4, "geometry.radius");
     }
 }
@@ -162,7 +166,7 @@ static size_t documented_length(const pg_command *c)
     if (f & U_MAKE) n += 1 + 4 + 4;
     if (f & U_BODY_DEF) n += 1 + 8 + 4 + 8 + 4 * 4 + 3 + 8;
     if (f & U_SHAPE_DEF) n += 5 * 4;
-    if (f & U_GEOMETRY) n += 2 + 8 * (size_t)c->geometry.count + 4;
+    if (f & U_GEOMETRY) n += 2 + 8 * (size_t)c->geometry.count + (c->geometry.kind == PG_SHAPE_CHAIN_SEGMENT ? 16 : 0) + 4;
     return n;
 }
 
@@ -210,6 +214,7 @@ static void set_geometry(pg_geometry *g, const pg_geometry *from)
     g->kind = from->kind;
     g->count = from->count;
     for (i = 0; i < from->count; ++i) g->vertices[i] = from->vertices[i];
+    if (from->kind == PG_SHAPE_CHAIN_SEGMENT) g->vertices[2] = from->vertices[2], g->vertices[3] = from->vertices[3];
     g->radius = from->radius;
 }
 
@@ -414,6 +419,13 @@ static void test_round_trip_variants(void **state)
         memset(&c.geometry, 0, sizeof c.geometry);
         set_geometry(&c.geometry, &g);
         check_round_trip(&c);
+
+        /* a chain segment carries its neighbours after its two vertices */
+        memset(&g, 0, sizeof g);
+        assert_int_equal(pg_geometry_chain_segment(pg_v2(fx(3), fx(1)), pg_v2(fx(1), 0), pg_v2(fx(-1), 0), pg_v2(fx(-3), fx(0.5)), &g), PG_OK);
+        memset(&c.geometry, 0, sizeof c.geometry);
+        set_geometry(&c.geometry, &g);
+        PG_EXPECT_EQ(check_round_trip(&c), 1 + 8 + 20 + 2 + 16 + 16 + 4, "%s", "chain segment");
     }
     /* extreme values survive: negative, INT32_MIN/MAX bit patterns, all-ones user data */
     c = full_command(PG_CMD_APPLY_LINEAR_IMPULSE, SOME_BODY);
@@ -497,8 +509,12 @@ static void test_encode_rejects_values_decode_rejects(void **state)
     c.body_def.type = (pg_body_type)3;
     PG_EXPECT_EQ(pg_command_encode(&c, buf, sizeof buf), 0, "%s", "body_def.type 3");
     c = full_command(PG_CMD_ADD_SHAPE, SOME_BODY);
-    c.geometry.kind = (pg_shape_kind)4;
-    PG_EXPECT_EQ(pg_command_encode(&c, buf, sizeof buf), 0, "%s", "geometry.kind 4");
+    c.geometry.kind = (pg_shape_kind)5;
+    PG_EXPECT_EQ(pg_command_encode(&c, buf, sizeof buf), 0, "%s", "geometry.kind 5");
+    c = full_command(PG_CMD_ADD_SHAPE, SOME_BODY); /* a capsule's count, 2, is a chain segment's */
+    c.geometry.kind = PG_SHAPE_CHAIN_SEGMENT;
+    c.geometry.count = 3;
+    PG_EXPECT_EQ(pg_command_encode(&c, buf, sizeof buf), 0, "%s", "a chain segment of 3 vertices");
 }
 
 /* ---- tests: decoding errors -------------------------------------------------------------------- */
@@ -626,7 +642,8 @@ static void test_decode_invalid_values(void **state)
     expect_bad_byte(PG_CMD_CREATE_BODY, "body_def.awake", 255, "command.body_def.awake");
     expect_bad_byte(PG_CMD_ADD_SHAPE, "geometry.count", 9, "command.geometry.count");
     expect_bad_byte(PG_CMD_ADD_SHAPE, "geometry.count", 255, "command.geometry.count");
-    expect_bad_byte(PG_CMD_ADD_SHAPE, "geometry.kind", 4, "command.geometry.kind");
+    expect_bad_byte(PG_CMD_ADD_SHAPE, "geometry.kind", 5, "command.geometry.kind");
+    expect_bad_byte(PG_CMD_ADD_SHAPE, "geometry.kind", 255, "command.geometry.kind");
 }
 
 /* The flag of APPLY_FORCE is checked as a boolean at its documented place (offset 17). */
@@ -807,6 +824,46 @@ static void test_apply_equals_direct_call(void **state)
         c.point = pg_v2(0, 0);
         check_apply_matches_call(&c);
     }
+}
+
+/* add_shape carries a chain segment through encode and decode and adds it as
+ * pg_shape_create does, neighbours included (the state hash covers them); on a body that
+ * is not static it fails as the call does (PG_ERR_BODY_TYPE) and changes nothing. */
+static void test_apply_chain_segment(void **state)
+{
+    test_world a = make_world(), b = make_world();
+    pg_command c = full_command(PG_CMD_ADD_SHAPE, a.ground), decoded;
+    pg_geometry g, got;
+    pg_shape_id sid, shapes[4];
+    uint8_t buf[PG_COMMAND_ENCODED_MAX];
+    size_t n, used = 0;
+    uint64_t h;
+    (void)state;
+    assert_int_equal(pg_geometry_chain_segment(pg_v2(fx(8), fx(1)), pg_v2(fx(6), 0), pg_v2(fx(4), 0), pg_v2(fx(2), fx(-1)), &g), PG_OK);
+    c.geometry = g;
+    n = pg_command_encode(&c, buf, sizeof buf);
+    assert_true(n > 0);
+    assert_int_equal(pg_command_decode(buf, n, &decoded, &used, NULL, NULL), PG_OK);
+    assert_int_equal(used, n);
+    assert_int_equal(pg_command_apply(a.w, &decoded, NULL), PG_OK);
+    assert_int_equal(pg_shape_create(b.w, b.ground, &c.shape_def, &g, &sid), PG_OK);
+    if (pg_world_hash(a.w) != pg_world_hash(b.w)) fail_msg("%s", "the command's chain segment differs from the call's");
+    assert_int_equal(pg_body_shapes(a.w, a.ground, shapes, 4), 2u);
+    assert_int_equal(pg_shape_geometry(a.w, shapes[1], &got), PG_OK);
+    assert_int_equal(got.kind, PG_SHAPE_CHAIN_SEGMENT);
+    assert_true(got.vertices[2].x == fx(8) && got.vertices[2].y == fx(1) && got.vertices[3].x == fx(2) && got.vertices[3].y == fx(-1));
+    /* another neighbour changes the world: the decoded one was used */
+    c.geometry.vertices[3] = pg_v2(fx(2), fx(1));
+    assert_int_equal(pg_command_apply(b.w, &c, NULL), PG_OK);
+    assert_int_equal(pg_command_apply(a.w, &decoded, NULL), PG_OK);
+    if (pg_world_hash(a.w) == pg_world_hash(b.w)) fail_msg("%s", "a neighbour is not in the state");
+    /* on the dynamic box */
+    h = pg_world_hash(a.w);
+    decoded.body = a.target;
+    assert_int_equal(pg_command_apply(a.w, &decoded, NULL), PG_ERR_BODY_TYPE);
+    if (pg_world_hash(a.w) != h) fail_msg("%s", "a refused chain segment changed the world");
+    free_world(&a);
+    free_world(&b);
 }
 
 /* A failing command fails as its call does and changes nothing. */
@@ -1042,8 +1099,12 @@ static void test_queue_push_validates(void **state)
     c.geometry.count = 9;
     EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "geometry.count 9");
     c = full_command(PG_CMD_ADD_SHAPE, t.target);
-    c.geometry.kind = (pg_shape_kind)4;
-    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "geometry.kind 4");
+    c.geometry.kind = (pg_shape_kind)5;
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "geometry.kind 5");
+    c = full_command(PG_CMD_ADD_SHAPE, t.target);
+    c.geometry.kind = PG_SHAPE_CHAIN_SEGMENT;
+    c.geometry.count = 3;
+    EXPECT_MESSAGE(t.w, pg_command_queue_push(&q, t.w, 5, &c), PG_ERR_INVALID_ARGUMENT, "pg_command_queue_push", "geometry.count 3");
     assert_int_equal(q.count, 0);
     /* the other refusals say why too */
     c = full_command(PG_CMD_SET_GRAVITY, t.target);
@@ -1072,6 +1133,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_teardown(test_round_trip_every_kind, free_leftovers),
         cmocka_unit_test_teardown(test_round_trip_variants, free_leftovers),
+        cmocka_unit_test_teardown(test_apply_chain_segment, free_leftovers),
         cmocka_unit_test_teardown(test_encoding_follows_documented_layout, free_leftovers),
         cmocka_unit_test_teardown(test_encode_rejects_invalid_commands, free_leftovers),
         cmocka_unit_test_teardown(test_encode_rejects_values_decode_rejects, free_leftovers),

@@ -253,7 +253,7 @@ static void failures_change_nothing(void **state)
 }
 
 /* A format 2 file (before the joint commands) is refused with a message naming the
- * upgrade, and pg_replay_upgrade gives back the format 3 file byte for byte. */
+ * upgrade, and pg_replay_upgrade gives back the current (format 4) file byte for byte. */
 static void old_replay_refused(void **state)
 {
     static const char scene[] = "pogon-scene 1\nball 0.5 position 0 2\n";
@@ -275,7 +275,7 @@ static void old_replay_refused(void **state)
     assert_int_equal(pg_replay_writer_begin(&w, buf, 4096, scene, sizeof scene - 1, 10), PG_OK);
     assert_int_equal(pg_replay_writer_add_checkpoint_world(&w, t.w), PG_OK);
     assert_int_equal(pg_replay_writer_finish(&w, pg_world_hash(t.w), &size), PG_OK);
-    assert_int_equal(buf[8], 3);
+    assert_int_equal(buf[8], 4);
     memcpy(v2, buf, size);
     v2[8] = 2; /* version 2, with the header hash and checksum it would have had */
     hash = pg_hash_bytes(PG_HASH_SEED, v2, 36);
@@ -284,12 +284,12 @@ static void old_replay_refused(void **state)
     for (i = 0; i < 8; ++i) v2[size - 8 + (size_t)i] = (uint8_t)(hash >> (8 * i));
     assert_int_equal(pg_replay_read(v2, size, &info, &e), PG_ERR_INCOMPATIBLE);
     assert_int_equal(e.offset, 8);
-    assert_non_null(strstr(e.message, "format version 2 is older than this build's 3"));
+    assert_non_null(strstr(e.message, "format version 2 is older than this build's 4"));
     assert_non_null(strstr(e.message, "pogon-replay upgrade"));
     assert_int_equal(pg_replay_upgrade(v2, size, pg_numeric_config(), out, 4096, &need, &e), PG_OK);
     assert_int_equal(need, size);
     assert_memory_equal(out, buf, size);
-    v2[size / 2] ^= 1; /* a damaged format 2 file is not sealed into a format 3 one */
+    v2[size / 2] ^= 1; /* a damaged format 2 file is not sealed into a format 4 one */
     assert_int_equal(pg_replay_upgrade(v2, size, pg_numeric_config(), out, 4096, &need, &e), PG_ERR_INVALID_ARGUMENT);
     free(buf);
     free(v2);

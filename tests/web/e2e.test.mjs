@@ -463,7 +463,7 @@ test('a corrupt, truncated, old or other-numerics file shows the reader\'s error
   reseal(format1, 32);
   const expected = {
     'other-table.pgr': /numeric_config: recorded with an 8-bit sine table; this build has a 12-bit sine table/,
-    'format1.pgr': /format_version: format version 1 is older than this build's 3: convert it with `pogon-replay upgrade IN OUT`/,
+    'format1.pgr': /format_version: format version 1 is older than this build's 4: convert it with `pogon-replay upgrade IN OUT`/,
   };
   for (const [name, buffer] of [['flipped.pgr', flipped], ['truncated.pgr', truncated], ['other-table.pgr', otherTable],
     ['format1.pgr', format1]]) {

@@ -67,7 +67,8 @@
  *   KIND: ball (SIZE0 radius), capsule (length radius), box (width height), triangle
  *   (circumradius), star (circumradius), wall (width height).
  *   GEOMETRY: circle CX CY R | segment AX AY BX BY | capsule AX AY BX BY R |
- *             box HW HH [CX CY ANGLE] | triangle CX CY R [ANGLE] | polygon X1 Y1 X2 Y2 X3 Y3 ...
+ *             box HW HH [CX CY ANGLE] | triangle CX CY R [ANGLE] | polygon X1 Y1 X2 Y2 X3 Y3 ... |
+ *             chain_segment BX BY X1 Y1 X2 Y2 AX AY (the point before, the segment, the point after)
  *   OPTIONS (key=value): body: type=static|kinematic|dynamic (default dynamic), x, y,
  *   angle, vx, vy, w, linear_damping, angular_damping, gravity_scale, fixed_rotation,
  *   allow_sleep, awake, user_data; shape: density, friction, restitution, category, mask.
@@ -480,7 +481,7 @@ static int cmd_info(int argc, char **argv)
     pg_world_def def;
     pg_world_stats st;
     char a[PG_FIX_FORMAT_MAX], b[PG_FIX_FORMAT_MAX];
-    uint32_t types[3] = {0, 0, 0}, kinds[4] = {0, 0, 0, 0}, i;
+    uint32_t types[3] = {0, 0, 0}, kinds[5] = {0, 0, 0, 0, 0}, i;
     int rc;
     if (argc != 1) {
         fprintf(stderr, "usage: pogon-replay info FILE\n");
@@ -512,7 +513,7 @@ static int cmd_info(int argc, char **argv)
         n = pg_body_shapes(r.player.world, id, shapes, 64);
         for (k = 0; k < n && k < 64; ++k) {
             pg_geometry g;
-            if (pg_shape_geometry(r.player.world, shapes[k], &g) == PG_OK && (unsigned)g.kind < 4) kinds[g.kind]++;
+            if (pg_shape_geometry(r.player.world, shapes[k], &g) == PG_OK && (unsigned)g.kind < 5) kinds[g.kind]++;
         }
     }
     printf("file            %s (%zu bytes)\n", argv[0], r.size);
@@ -526,8 +527,8 @@ static int cmd_info(int argc, char **argv)
     printf("checksum        %016llx\n", (unsigned long long)r.info.checksum);
     printf("scene           %zu bytes of text at offset %zu\n", r.info.scene_size, r.info.scene_offset);
     printf("  bodies        %u (static %u, kinematic %u, dynamic %u), shapes %u (circle %u, segment %u, capsule %u, "
-           "polygon %u)\n",
-           st.body_count, types[0], types[1], types[2], st.shape_count, kinds[0], kinds[1], kinds[2], kinds[3]);
+           "polygon %u, chain segment %u)\n",
+           st.body_count, types[0], types[1], types[2], st.shape_count, kinds[0], kinds[1], kinds[2], kinds[3], kinds[4]);
     printf("  gravity       (%s, %s) m/s^2\n", fix_str(def.gravity.x, a), fix_str(def.gravity.y, b));
     printf("  step          %u Hz, %u substeps\n", def.step_hz, def.substeps);
     printf("  effects       ");
@@ -1019,9 +1020,12 @@ static int parse_geometry(const script *s, uint32_t line, tokens *tk, int from, 
         pg_vec2 pts[PG_MAX_VERTICES];
         for (i = 0; i < n / 2; ++i) pts[i] = pg_v2(v[2 * i], v[2 * i + 1]);
         r = pg_geometry_polygon(pts, n / 2, g);
-    } else
+    } else if (strcmp(kind, "chain_segment") == 0 && n == 8)
+        r = pg_geometry_chain_segment(pg_v2(v[0], v[1]), pg_v2(v[2], v[3]), pg_v2(v[4], v[5]), pg_v2(v[6], v[7]), g);
+    else
         return script_error(s, line, "bad geometry (circle CX CY R | segment AX AY BX BY | capsule AX AY BX BY R | "
-                                     "box HW HH [CX CY ANGLE] | triangle CX CY R [ANGLE] | polygon X1 Y1 ...)",
+                                     "box HW HH [CX CY ANGLE] | triangle CX CY R [ANGLE] | polygon X1 Y1 ... | "
+                                     "chain_segment BX BY X1 Y1 X2 Y2 AX AY)",
                             kind);
     if (r != PG_OK) return script_error(s, line, "invalid geometry", pg_result_name(r));
     return 1;

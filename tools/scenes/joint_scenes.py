@@ -94,21 +94,25 @@ def bridge():
     write('bridge', '\n'.join(t) + '\n')
 
 
+def bowl_outline():
+    """The U, counter-clockwise: the outside (the inside offset by 0.4 m), then the inside."""
+    t, h, w = 0.4, 3.0, 4.0
+    ox = w + t * (math.sqrt(2) - 1)  # the outer side x - y = w + t sqrt(2), at y = -t
+    return [(-ox, -t), (ox, -t), (ox + h + t, h), (w + h, h), (w, 0), (-w, 0), (-w - h, h), (-ox - h - t, h)]
+
+
 def blob():
     n, ring, cy = 12, 1.2, 9.0
     side = 2 * ring * math.sin(math.pi / n)
     t = ['pogon-scene 1',
          '# soft_blob_bowl: a soft blob (a ball of radius 0.3 m ringed by 12 balls of radius 0.2 m,',
          '# each ring ball joined to the centre and to its two neighbours by distance springs of',
-         '# 4 Hz and damping ratio 0.5) falls into a bowl of three static boxes on one body.',
+         '# 4 Hz and damping ratio 0.5) falls into a bowl: one static concave body, a U of 8',
+         '# vertices (a flat bottom 8 m wide, sides at 45 degrees 3 m high, walls 0.4 m thick).',
          '# Written by tools/scenes/joint_scenes.py.',
          '', ROOM.rstrip(), '',
-         '# body 0: the bowl, a flat bottom 8 m wide and two sides at 45 degrees',
-         'body static', '  position 0 0',
-         '  shape box 8 0.4 friction 0.8',
-         '  shape box 4 0.4 offset %s %s angle 135 friction 0.8' % (num(-4 - 2 * math.cos(math.pi / 4)), num(2 * math.sin(math.pi / 4))),
-         '  shape box 4 0.4 offset %s %s angle 45 friction 0.8' % (num(4 + 2 * math.cos(math.pi / 4)), num(2 * math.sin(math.pi / 4))),
-         'end',
+         '# body 0: the bowl; its inside floor is y = 0 from x = -4 to 4',
+         'concave %s type static friction 0.8' % ' '.join(num(c) for p in bowl_outline() for c in p),
          'ball 0.3 position 0 %s                    # body 1: the centre' % num(cy)]
     for i in range(n):
         a = 2 * math.pi * i / n
