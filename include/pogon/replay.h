@@ -170,7 +170,7 @@ typedef enum pg_section {
     PG_SECTION_SHAPES = 2,    /**< shape pool: slots, generations, geometry, material, filter */
     PG_SECTION_CONTACTS = 3,  /**< contact list in order: manifolds, warm-start impulses */
     PG_SECTION_BROADPHASE = 4,/**< the broadphase's inputs kept between steps (proxy boxes) */
-    PG_SECTION_JOINTS = 5,    /**< reserved: no joints yet (hashes the empty section) */
+    PG_SECTION_JOINTS = 5,    /**< the joint pool: each joint's kind, bodies, definition and solver state; empty (no bytes) while the pool was never used */
     PG_SECTION_COUNT          /**< the number of sections (not a section) */
 } pg_section;
 
