@@ -472,7 +472,7 @@ def markdown(r, path):
         L.append("| 1024 bodies, 1024 shapes, 4096 contacts (the defaults) | %d (%s) |" % (memory[base], kib(memory[base])))
         L.append("")
         L.append("What one more slot costs, by part of the world's memory block (src/core/world.c, from 8 more slots "
-                 "at the defaults; the scratch area serves the broadphase, then the solver, then a body's mass, "
+                 "at the defaults; the scratch area serves the broadphase, then the next step's contact list, then the solver, then a body's mass, "
                  "and is as large as the largest of them: here the solver's):")
         L.append("")
         L.append("| slot | budget | bytes | parts |")
