@@ -2,7 +2,8 @@
 # check-layers.sh — prove that the library's files form layers: no file depends,
 # directly or through others, on a file that depends on it.
 #
-# Usage: scripts/check-layers.sh [--markdown] [SRC_DIR]    (default: src beside this script)
+# Usage: scripts/check-layers.sh [--markdown] [SRC_DIR]    (default: src beside this script;
+#        its files and those of its subdirectories, src/core and src/io)
 #   --markdown  print the layers inside a ``` block, as docs/architecture.md's generated
 #               region holds them (tools/docs/regions.js checks that it matches)
 #
@@ -32,6 +33,20 @@ if [ ! -d "$src" ]; then
   exit 2
 fi
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/pogon-layers.XXXXXX")
+# the files of one extension in SRC_DIR and in its subdirectories (src/core, src/io): a
+# module is named by its file name, whichever directory holds it
+files() {
+  for f in "$src"/*."$1" "$src"/*/*."$1"; do
+    if [ -f "$f" ]; then echo "$f"; fi
+  done
+}
+# whether a header of that name is in SRC_DIR or one of its subdirectories
+has_header() {
+  for f in "$src/$1.h" "$src"/*/"$1.h"; do
+    if [ -f "$f" ]; then return 0; fi
+  done
+  return 1
+}
 trap 'rm -rf "$tmp"' EXIT INT TERM
 
 # code: a file without its comments and string literals, so that a name in a message
@@ -53,13 +68,13 @@ code() {
 }
 
 # defs: "function module" for every non-static pg_ function defined in a .c file
-for f in "$src"/*.c; do
+for f in $(files c); do
   m=$(basename "$f" .c)
   sed -n 's/^[A-Za-z_][A-Za-z0-9_ *]*[ *]\(pg_[A-Za-z0-9_]*\)(.*[^;]$/\1/p; s/^[A-Za-z_][A-Za-z0-9_ *]*[ *]\(pg_[A-Za-z0-9_]*\)(.*,$/\1/p' "$f" |
     grep -v '^$' | sed "s/\$/ $m/"
 done | awk '!/^static/' | sort -u > "$tmp/defs"
 # a static definition is not a module's export: drop names defined "static" at line start
-for f in "$src"/*.c; do
+for f in $(files c); do
   sed -n 's/^static .*[ *]\(pg_[A-Za-z0-9_]*\)(.*/\1/p' "$f"
 done | sort -u > "$tmp/statics"
 awk 'FILENAME == ARGV[1] { s[$1] = 1; next } !($1 in s)' "$tmp/statics" "$tmp/defs" > "$tmp/exports"
@@ -67,12 +82,12 @@ awk 'FILENAME == ARGV[1] { s[$1] = 1; next } !($1 in s)' "$tmp/statics" "$tmp/de
 status=0
 # every module has a node, so one that depends on nothing still gets a layer
 : > "$tmp/edges"
-for f in "$src"/*.c "$src"/*.h; do
+for f in $(files c) $(files h); do
   m=$(basename "$f"); m=${m%.*}; m=${m%_internal}
   echo "$m $m" >> "$tmp/edges"
   # includes of this directory's headers (public headers, <...> and .inc files are not modules)
   sed -n 's/^[ \t]*#[ \t]*include[ \t]*"\([A-Za-z0-9_]*\)\.h".*/\1/p' "$f" | while read -r h; do
-    if [ -f "$src/$h.h" ] && [ "${h%_internal}" != "$m" ]; then echo "$m ${h%_internal}"; fi
+    if has_header "$h" && [ "${h%_internal}" != "$m" ]; then echo "$m ${h%_internal}"; fi
   done >> "$tmp/edges"
   case $f in
     *.c)
@@ -107,7 +122,7 @@ fi
 # a .c (types, inline helpers), never on a file of another module target.
 if [ -f "$src/CMakeLists.txt" ] && grep -q 'set(POGON_CORE_SOURCES' "$src/CMakeLists.txt"; then
   sed -n '/set(POGON_CORE_SOURCES/,/)/p' "$src/CMakeLists.txt" | sed -n 's/^[ \t]*\([A-Za-z0-9_]*\)\.c[ \t]*$/\1/p' > "$tmp/core"
-  for f in "$src"/*.c; do basename "$f" .c; done > "$tmp/with_c"
+  for f in $(files c); do basename "$f" .c; done > "$tmp/with_c"
   awk 'FILENAME == ARGV[1] { core[$1] = 1; next } FILENAME == ARGV[2] { hasc[$1] = 1; next }
        $1 != $2 && ($1 in core) && ($2 in hasc) && !($2 in core) {
          printf "check-layers: core module %s depends on %s, which is not in POGON_CORE_SOURCES (src/CMakeLists.txt)\n", $1, $2; bad = 1 }

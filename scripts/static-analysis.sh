@@ -1,11 +1,11 @@
 #!/bin/sh
-# static-analysis.sh — clang-tidy and cppcheck on the library's sources (src/), which must
+# static-analysis.sh — clang-tidy and cppcheck on the library's sources (src/core, src/io), which must
 # have no findings: a finding that is not a bug is suppressed where it stands, with its
 # reason (NOLINT(check): reason; /* cppcheck-suppress id ; reason */).
 #
 # Usage: scripts/static-analysis.sh clang-tidy|cppcheck|all BUILD_DIR
 #   clang-tidy  the checks of .clang-tidy (bugprone-*, cert-*, clang-analyzer-*) on each
-#               src/*.c, with the compile commands of BUILD_DIR (compile_commands.json),
+#               src/*/*.c, with the compile commands of BUILD_DIR (compile_commands.json),
 #               nproc files at a time. The analyser explores at most POGON_ANALYZER_NODES
 #               (default 20000) nodes per function instead of its default 225000,
 #               which spends most of its time on a few long functions (set 225000 for a
@@ -35,7 +35,7 @@ run_clang_tidy() {
   out=$(mktemp)
   # one file per process, nproc at a time; --quiet leaves only the findings
   nodes=${POGON_ANALYZER_NODES:-20000}
-  if ! ls "$root"/src/*.c | xargs -P "$jobs" -n 1 "$tidy" --quiet -p "$build" \
+  if ! ls "$root"/src/*/*.c | xargs -P "$jobs" -n 1 "$tidy" --quiet -p "$build" \
          --extra-arg=-Xclang --extra-arg=-analyzer-config --extra-arg=-Xclang --extra-arg=max-nodes="$nodes" \
          > "$out" 2>&1; then status=1; fi
   if grep -q 'warning:\|error:' "$out"; then
@@ -45,7 +45,7 @@ run_clang_tidy() {
   elif [ "$status" -ne 0 ]; then
     cat "$out"; echo "static-analysis: clang-tidy failed"
   else
-    echo "static-analysis: clang-tidy: no findings in $(ls "$root"/src/*.c | wc -l) files"
+    echo "static-analysis: clang-tidy: no findings in $(ls "$root"/src/*/*.c | wc -l) files"
   fi
   rm -f "$out"
 }
@@ -54,7 +54,7 @@ run_cppcheck() {
   if ! command -v cppcheck > /dev/null; then echo "static-analysis: cppcheck not found (scripts/setup-deps.sh)"; exit 77; fi
   bits=$(sed -n 's/^PG_TRIG_TABLE_BITS:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null || true)
   if ! cppcheck --std=c99 --enable=warning,portability,performance --inline-suppr --error-exitcode=1 --quiet \
-         -j "$jobs" -I "$root/include" -I "$root/src" -DPG_TRIG_TABLE_BITS="${bits:-12}" \
+         -j "$jobs" -I "$root/include" -I "$root/src/core" -DPG_TRIG_TABLE_BITS="${bits:-12}" \
          --suppress=missingIncludeSystem "$root/src"; then
     echo "static-analysis: cppcheck found problems in src/ (above)"
     status=1

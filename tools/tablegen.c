@@ -1,6 +1,6 @@
-/* tablegen — writes src/trig_table.inc, the lookup tables of pogon's trigonometry.
+/* tablegen — writes src/core/trig_table.inc, the lookup tables of pogon's trigonometry.
  *
- * Usage: pogon-tablegen > src/trig_table.inc
+ * Usage: pogon-tablegen > src/core/trig_table.inc
  *
  * The library never computes these with floating point; it includes the committed
  * output. This generator may use double because CI regenerates the file and compares

@@ -1,6 +1,6 @@
 # tablegen.cmake — run pogon-tablegen and compare or install its output.
 #
-#   cmake -DGENERATOR=<pogon-tablegen> -DTARGET_FILE=<src/trig_table.inc>
+#   cmake -DGENERATOR=<pogon-tablegen> -DTARGET_FILE=<src/core/trig_table.inc>
 #         -DOUTPUT=<scratch file> -DMODE=compare|write -P tablegen.cmake
 #
 # MODE=compare (the CTest test tablegen_matches): fails unless the generator's output is

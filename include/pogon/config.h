@@ -63,7 +63,7 @@
  *
  * Adding a switch that changes results (or leaves a feature out): give it the next free
  * bits below (a _SHIFT and a _MASK), OR its value into PG_NUMERIC_CONFIG, and add a row
- * naming it to the table in src/numeric_config.c (its messages). Make its value 0 mean
+ * naming it to the table in src/core/numeric_config.c (its messages). Make its value 0 mean
  * what builds without the switch did, so that files recorded before it existed keep
  * loading in default builds.
  * @{ */

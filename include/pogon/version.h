@@ -3,7 +3,7 @@
  *
  * CMakeLists.txt reads these three lines for project(VERSION), so the CMake package,
  * the shared library's name and pogon.pc carry the same number; the replay writer
- * (src/replay_file.c) stores it in every replay header.
+ * (src/io/replay_file.c) stores it in every replay header.
  *
  * The rule before 1.0: a change of the numerics (any change of the bits a step
  * produces) bumps the minor version and re-hashes the replay corpus in the same

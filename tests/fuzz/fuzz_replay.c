@@ -1,5 +1,5 @@
 /* fuzz_replay.c — libFuzzer target for the replay file reader and player
- * (src/replay_file.c).
+ * (src/io/replay_file.c).
  *
  * For any input bytes:
  *   - pg_replay_read returns PG_OK, PG_ERR_INVALID_ARGUMENT or PG_ERR_INCOMPATIBLE (another

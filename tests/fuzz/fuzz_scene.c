@@ -1,4 +1,4 @@
-/* fuzz_scene.c — libFuzzer target for the scene reader and writer (src/scene_file.c).
+/* fuzz_scene.c — libFuzzer target for the scene reader and writer (src/io/scene_file.c).
  *
  * For any input bytes:
  *   - pg_scene_read_def returns a pg_result, never reads past the input (libFuzzer hands

@@ -1078,7 +1078,7 @@ static void test_overlapping_column_is_not_thrown(void **state)
  * contact_push_max 0.2 m/s, sleeping on. The push-out beyond a contact's hold moves
  * positions only (DEEP PUSH), so the boxes look at rest to the sleep test (their speeds
  * stay below 0.05 m/s) while the push still separates them; an island whose contacts hold
- * a push impulse must stay awake (src/island.c). Asserted: after 5 s the centres are 1 m
+ * a push impulse must stay awake (src/core/island.c). Asserted: after 5 s the centres are 1 m
  * apart to within OVERLAP_TOL (separated, not asleep half way: without that rule they
  * fall asleep at 1 s, 0.599 m apart), and both boxes are asleep by 10 s.
  * ===================================================================================== */

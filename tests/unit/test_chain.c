@@ -1,4 +1,4 @@
-/* test_chain.c — chains of segments (src/chain.c, collide.c's chain segments): a box
+/* test_chain.c — chains of segments (src/core/chain.c, collide.c's chain segments): a box
  * sliding across the joints of a chain gets no upward kick and ends at the height it
  * has on one long segment, while the same run on separate segments bumps (so the test
  * can fail); validation, failing calls, and the state that carries the neighbours.

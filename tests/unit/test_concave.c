@@ -1,4 +1,4 @@
-/* test_concave.c — concave polygons (src/decompose.c, src/concave.c): the pieces are
+/* test_concave.c — concave polygons (src/core/decompose.c, src/core/concave.c): the pieces are
  * convex polygons pg_geometry_polygon accepts, their areas add up to the polygon's
  * exactly (integer coordinates: both are exact integers, twice the area in raw units
  * squared), a body of them has the polygon's mass, centre and inertia, and bad input

@@ -1,5 +1,5 @@
 /* test_mass.c — mass, centre of mass, inertia and area of geometries and compounds
- * (src/mass.c).
+ * (src/core/mass.c).
  *
  * References are computed here in long double (64-bit mantissa on x86-64; at least
  * double elsewhere) from the EXACT values of the Q16.16 inputs, about the centre the

@@ -1,4 +1,4 @@
-/* test_scene_concave.c — concave bodies and chains in scene files (src/scene_file.c):
+/* test_scene_concave.c — concave bodies and chains in scene files (src/io/scene_file.c):
  * the `concave` and `chain` lines make what pg_make_concave and pg_make_chain make (the
  * same world hash), pg_scene_write writes them back (as their convex pieces and as
  * `shape chain_segment` lines with the neighbours) so that loading the text gives the

@@ -80,7 +80,7 @@ static int reseal(uint8_t *bytes, size_t size);
 static uint32_t get32(const uint8_t *p);
 static void put32(uint8_t *p, uint32_t v);
 
-/* The snapshot header (src/state.c): "PGSN", u16 format version, u16 engine major,
+/* The snapshot header (src/io/state.c): "PGSN", u16 format version, u16 engine major,
  * minor, patch, u32 numeric configuration, three u32 capacities. */
 #define HEADER_SIZE 28u
 
@@ -671,7 +671,7 @@ static void test_other_numerics_refused(void **state)
  * outside the envelope overflows int32 arithmetic in the step (UBSan). So a restored
  * world is never stepped here; each case only checks that the snapshot is refused.
  *
- * Offsets follow the record layout written by src/state.c (body: u32 generation, u8
+ * Offsets follow the record layout written by src/io/state.c (body: u32 generation, u8
  * used, u32 presence, u8 type, u8 flags, vec centre, u32 angle, u32 first_shape,
  * u32 shape_count, optional fields; shape: u32 generation, u8 used, u32 body, u32 next,
  * u8 kind, u8 count, vertices, i32 radius, density, friction, restitution, u32
@@ -975,7 +975,7 @@ static void test_inconsistent_snapshots_refused(void **state)
     }
 
     /* values no world holds. The setters and the step bound every one (the limits in
-     * src/state.c): a velocity component within the solver's 2^29 (8192 m/s), forces
+     * src/io/state.c): a velocity component within the solver's 2^29 (8192 m/s), forces
      * within the accumulators' 2^60 (body.c), damping 0..1000, gravity scale -100..100,
      * a sleep timer 0..1001 s, contact materials a mix of the shapes' (friction 0..10,
      * restitution 0..1), unit normals and impulses within the solver's 2^29. Outside,
@@ -1145,7 +1145,7 @@ static void expect_sections(const uint64_t before[PG_SECTION_COUNT], const uint6
 
 /* Section byte ranges: the header (HEADER_SIZE bytes), then per section
  * u8 id, u32 length, bytes, u64 hash, then the u64 checksum (the framing documented in
- * src/state.c). */
+ * src/io/state.c). */
 static void section_ranges(const snapshot *s, size_t start[PG_SECTION_COUNT], size_t length[PG_SECTION_COUNT])
 {
     size_t pos = HEADER_SIZE;

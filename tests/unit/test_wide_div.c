@@ -1,4 +1,4 @@
-/* test_wide_div.c — pg__div64_shl (src/wide.h), the set-up's wide division: for every
+/* test_wide_div.c — pg__div64_shl (src/core/wide.h), the set-up's wide division: for every
  * numerator, denominator and shift it is round(num 2^shift / den), nearest with ties
  * away from zero, saturated to +-INT64_MAX when the quotient reaches 2^63, exactly as
  * an __int128 reference computes it. The cases cover denominators of every bit length

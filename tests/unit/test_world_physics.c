@@ -1125,7 +1125,7 @@ static void test_without_continuous_bullet_tunnels(void **state)
 }
 
 /* ---- saturation and low step rates --------------------------------------------------------------- */
-/* The solver's integration, restated exactly (src/solver.c, integrate_velocities): n = step_hz * substeps
+/* The solver's integration, restated exactly (src/core/solver.c, integrate_velocities): n = step_hz * substeps
  * substeps per second, h = round(2^32 / n) (Q32 s); in substep k (t_k = k h) velocity
  * changes by round(a t_(k+1) / 2^32) - round(a t_k / 2^32), and the angle by the binary
  * angle round(w A / 2^24) modulo 2^32 (a full turn), A = round(174992710548 / n) (2^40 /

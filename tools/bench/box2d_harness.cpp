@@ -164,7 +164,7 @@ b2Body *build_joints(b2World *w, const std::string &scene, uint32_t count, std::
         b2PolygonShape box;
         box.SetAsBox((float)(0.5 * LINK_LENGTH + LINK_RADIUS), (float)LINK_RADIUS);
         fd.shape = &box;
-        // the capsule's mass and inertia about its centre (as src/mass.c): area 2rL + pi r^2,
+        // the capsule's mass and inertia about its centre (as src/core/mass.c): area 2rL + pi r^2,
         // I = rL^3/6 + 2r^3 L + pi r^2 (r^2/2 + L^2/4), density 1
         const double pi = 3.14159265358979323846, r = LINK_RADIUS, l = LINK_LENGTH;
         b2MassData md;

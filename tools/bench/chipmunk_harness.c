@@ -248,7 +248,7 @@ static cpBody *build_joints(cpSpace *space, const char *scene, uint32_t count, c
             }
         }
     } else {
-        /* the capsule's mass and inertia about its centre (as src/mass.c): area 2rL + pi r^2,
+        /* the capsule's mass and inertia about its centre (as src/core/mass.c): area 2rL + pi r^2,
          * I = rL^3/6 + 2r^3 L + pi r^2 (r^2/2 + L^2/4), density 1 */
         double r = LINK_RADIUS, l = LINK_LENGTH;
         double mass = DENSITY * (2.0 * r * l + PI * r * r);

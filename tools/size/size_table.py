@@ -51,7 +51,7 @@ CPUS = {  # name: (flags, qemu board)
     "M0+": (["-mcpu=cortex-m0plus"], "mps2-an385"),
 }
 COMMON = ["-mthumb", "-mgeneral-regs-only", "-Os", "-std=c99", "-ffunction-sections", "-fdata-sections",
-          "-Iinclude", "-Isrc", "-DPG_TRIG_TABLE_BITS=12", "-DPG_FAST_DIV64=0"]
+          "-Iinclude", "-Isrc/core", "-DPG_TRIG_TABLE_BITS=12", "-DPG_FAST_DIV64=0"]
 LINK = ["-Wl,--gc-sections", "-nostartfiles", "--specs=nano.specs"]
 FILE_FORMATS = ("scene_file.c", "replay_file.c", "replay_upgrade.c")
 # The issue's budgets (issue 30), KiB of flash; the core module has none of its own.
@@ -76,7 +76,9 @@ def run(cmd, **kw):
 
 
 def library_sources():
-    return sorted(os.path.join("src", f) for f in os.listdir(os.path.join(ROOT, "src")) if f.endswith(".c"))
+    """src/core/*.c and src/io/*.c (object files are named by the file's base name)."""
+    return sorted(os.path.join("src", d, f) for d in ("core", "io")
+                  for f in os.listdir(os.path.join(ROOT, "src", d)) if f.endswith(".c"))
 
 
 def core_sources():
@@ -469,8 +471,8 @@ def markdown(r, path):
             L.append("| pyramid of 20 rows: %d bodies, %d shapes, %d contacts | %d (%s) |" % (k + (memory[k], kib(memory[k]))))
         L.append("| 1024 bodies, 1024 shapes, 4096 contacts (the defaults) | %d (%s) |" % (memory[base], kib(memory[base])))
         L.append("")
-        L.append("What one more slot costs, by part of the world's memory block (src/world.c, from 8 more slots "
-                 "at the defaults; the scratch area serves the broadphase, then the solver, then a body's mass, "
+        L.append("What one more slot costs, by part of the world's memory block (src/core/world.c, from 8 more slots "
+                 "at the defaults; the scratch area serves the broadphase, then the next step's contact list, then the solver, then a body's mass, "
                  "and is as large as the largest of them: here the solver's):")
         L.append("")
         L.append("| slot | budget | bytes | parts |")

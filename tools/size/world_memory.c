@@ -1,7 +1,7 @@
 /* world_memory.c — firmware (ports/cortex-m) that prints pg_world_memory_size on the
  * target, whose pointers and alignment decide it: for a reference world and with one
  * more body, shape or contact slot, so size_table.py can state the bytes per slot, and
- * the parts of the memory block (src/world.c's layout) for each of those worlds, so it
+ * the parts of the memory block (src/core/world.c's layout) for each of those worlds, so it
  * can say which part a slot's bytes go to.
  * Output: "memory BODIES SHAPES CONTACTS BYTES" and "part BODIES SHAPES CONTACTS BYTES
  * NAME" lines. */

@@ -815,7 +815,7 @@ void ref_step(ref_world *w)
     /* 2. contacts */
     update_contacts(w);
     /* 3. solve */
-    /* the softness cap of src/contact_solver.c: neither softness stiffer than a quarter of the
+    /* the softness cap of src/core/contact_solver.c: neither softness stiffer than a quarter of the
      * substep rate */
     if (hertz * 4 > n_per_s) hertz = n_per_s / 4;
     ctx.n = n_per_s;

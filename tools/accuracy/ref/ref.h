@@ -4,7 +4,7 @@
  * algorithm in double, so a difference between the two runs of one scene is arithmetic,
  * not method. It lives in tools/ and is never part of the library.
  *
- * Same scheme as pogon (src/solver.c, src/contact_solver.c, src/collide.c, src/contact.c): bodies are one
+ * Same scheme as pogon (src/core/solver.c, src/core/contact_solver.c, src/core/collide.c, src/core/contact.c): bodies are one
  * circle or one box each (the body's shape index is its body index); broadphase boxes
  * grow by the 0.02 m speculative distance and, with continuous on, by the distance a
  * body travels in a step; manifolds of up to two points (SAT with reference-face

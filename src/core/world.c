@@ -62,13 +62,13 @@ static const char *check_def(const pg_world_def *d)
 }
 
 typedef struct layout {
-    size_t world, bodies, shapes, joints, contacts, contacts_next, geoms, boxes, flags, pboxes, pflags, pshape, pairs, scratch, island, begin, end,
+    size_t world, bodies, shapes, joints, contacts, geoms, boxes, flags, pboxes, pflags, pshape, pairs, scratch, island, begin, end,
         total;
 } layout;
 
 static size_t align8(size_t n) { return (n + 7u) & ~(size_t)7u; }
 
-static size_t max3(size_t a, size_t b, size_t c) { return a > b ? (a > c ? a : c) : (b > c ? b : c); }
+static size_t max2(size_t a, size_t b) { return a > b ? a : b; }
 
 static layout compute_layout(const pg_world_def *d)
 {
@@ -81,7 +81,6 @@ static layout compute_layout(const pg_world_def *d)
     PLACE(shapes, sizeof(pg_shape) * d->max_shapes);
     PLACE(joints, sizeof(pg_joint) * d->max_joints);
     PLACE(contacts, sizeof(pg_contact) * d->max_contacts);
-    PLACE(contacts_next, sizeof(pg_contact) * d->max_contacts);
     PLACE(geoms, sizeof(pg_geom) * d->max_shapes);
     PLACE(boxes, sizeof(pg_aabb) * d->max_shapes);
     PLACE(flags, d->max_shapes);
@@ -90,11 +89,12 @@ static layout compute_layout(const pg_world_def *d)
     PLACE(pshape, sizeof(uint32_t) * d->max_shapes);
     PLACE(pairs, sizeof(pg_pair) * pair_capacity);
     /* One scratch area for the stages that never hold it at the same time: the
-     * broadphase (its output is the pairs above), then the solver and after it the
+     * broadphase (its output is the pairs above), then the next step's contact list
+     * (contact.c, copied into the contacts above), then the solver and after it the
      * islands, and between steps the mass of a body being changed (body.h) or the check
      * of a snapshot being restored. */
-    PLACE(scratch, max3(pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity), pg__solver_scratch_bytes(d),
-                        pg__body_mass_scratch_bytes()));
+    PLACE(scratch, max2(max2(pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity), sizeof(pg_contact) * d->max_contacts),
+                        max2(pg__solver_scratch_bytes(d), pg__body_mass_scratch_bytes())));
     PLACE(island, sizeof(uint32_t) * d->max_bodies);
     PLACE(begin, sizeof(pg_contact_event) * d->max_contacts);
     PLACE(end, sizeof(pg_contact_event) * d->max_contacts);
@@ -116,19 +116,19 @@ size_t pg_world_memory_size(const pg_world_def *def)
 
 const char *pg__world_memory_part(const pg_world_def *def, unsigned i, size_t *bytes)
 {
-    static const char *const names[] = {"world", "bodies", "shapes", "joints", "contacts", "contacts (next step)",
+    static const char *const names[] = {"world", "bodies", "shapes", "joints", "contacts",
                                         "world geometries", "boxes", "proxy flags", "proxy boxes",
                                         "proxy flags (compact)", "proxy shapes", "pairs",
-                                        "scratch (broadphase / solver / mass)", "island parents",
+                                        "scratch (broadphase / next contacts / solver / mass)", "island parents",
                                         "begin events", "end events"};
     layout l;
     size_t at[sizeof names / sizeof names[0] + 1];
     *bytes = 0;
     if (def == NULL || check_def(def) != NULL || i >= sizeof names / sizeof names[0]) return NULL;
     l = compute_layout(def);
-    at[0] = l.world; at[1] = l.bodies; at[2] = l.shapes; at[3] = l.joints; at[4] = l.contacts; at[5] = l.contacts_next;
-    at[6] = l.geoms; at[7] = l.boxes; at[8] = l.flags; at[9] = l.pboxes; at[10] = l.pflags; at[11] = l.pshape;
-    at[12] = l.pairs; at[13] = l.scratch; at[14] = l.island; at[15] = l.begin; at[16] = l.end; at[17] = l.total;
+    at[0] = l.world; at[1] = l.bodies; at[2] = l.shapes; at[3] = l.joints; at[4] = l.contacts;
+    at[5] = l.geoms; at[6] = l.boxes; at[7] = l.flags; at[8] = l.pboxes; at[9] = l.pflags; at[10] = l.pshape;
+    at[11] = l.pairs; at[12] = l.scratch; at[13] = l.island; at[14] = l.begin; at[15] = l.end; at[16] = l.total;
     *bytes = at[i + 1] - at[i];
     return names[i];
 }
@@ -154,7 +154,6 @@ pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_s
     w->shapes = (pg_shape *)(void *)(m + l.shapes);
     w->joints = (pg_joint *)(void *)(m + l.joints);
     w->contacts = (pg_contact *)(void *)(m + l.contacts);
-    w->contacts_next = (pg_contact *)(void *)(m + l.contacts_next);
     w->world_geoms = (pg_geom *)(void *)(m + l.geoms);
     w->boxes = (pg_aabb *)(void *)(m + l.boxes);
     w->proxy_flags = m + l.flags;

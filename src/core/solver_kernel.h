@@ -24,6 +24,8 @@
  * Arithmetic right shift of a negative value is pinned by fixed.h's compile-time check. */
 static inline int64_t row_round(int64_t x, int n) { return (x + ((int64_t)1 << (n - 1))) >> n; }
 
+/* Ordered so that the int64 fields need no padding (128 bytes): one per body slot in the
+ * world's scratch. */
 typedef struct solver_body {
     pg_vec2 v;
     pg_fix w;
@@ -32,6 +34,9 @@ typedef struct solver_body {
                              lasts at most 1 s), fits */
     pg_angle a0, a;
     pg_rot dq;            /* rotation from a0 to a; kept only when turns_anchors */
+    uint32_t saturated;   /* nonzero when a velocity of this body was clamped to the
+                             kernel's bounds in this step: counted once in stats.saturations
+                             at the write-back */
     int64_t turn;         /* radians turned since the step's start, Q32 (|w| <= 2^29 Q16 and
                              h <= 2^32 Q32 s, so each substep's w h fits; 16 of them too) */
     int32_t turns_anchors;/* some contact anchor on this body turns with it (not a centred
@@ -50,9 +55,6 @@ typedef struct solver_body {
                              START). Both ends of v are within the kernel's bounds (2^29),
                              so dv fits int32; w_pre, after an angular integration, within
                              +-2^31, so dw needs int64 */
-    uint32_t saturated;   /* nonzero when a velocity of this body was clamped to the
-                             kernel's bounds in this step: counted once in stats.saturations
-                             at the write-back */
 } solver_body;
 
 /* What the joints changed in a body's v and w since the substep's velocity integration,

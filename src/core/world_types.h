@@ -29,7 +29,8 @@ struct pg_world {
     uint64_t frame;
     pg_body *bodies;
     pg_shape *shapes;
-    pg_contact *contacts, *contacts_next; /* two buffers, swapped each step */
+    pg_contact *contacts;      /* the contact update builds the next list in the scratch and
+                                  copies it back (contact.c) */
     uint32_t contact_count;
     uint32_t body_high;        /* one past the highest body slot ever used (never shrinks:
                                   the generations of freed slots are state) */

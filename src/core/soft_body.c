@@ -163,7 +163,8 @@ pg_result pg_make_cloth_strip(pg_world *w, const pg_soft_def *d, pg_vec2 origin,
                               pg_body_id *first)
 {
     static const char who[] = "pg_make_cloth_strip";
-    pg_body_id below[64], here[64];
+    pg_body_id row[64]; /* the row being made from column 0 up to i - 1, the row below from i on */
+    pg_body_id below_left = {0, 0}, below_here = {0, 0};
     pg_result r;
     uint32_t i, j, joints;
     pg_fix diagonal;
@@ -180,14 +181,15 @@ pg_result pg_make_cloth_strip(pg_world *w, const pg_soft_def *d, pg_vec2 origin,
     if ((r = check_room(w, columns * rows, joints)) != PG_OK) return r;
     for (j = 0; j < rows && r == PG_OK; ++j) {
         for (i = 0; i < columns && r == PG_OK; ++i) {
-            r = ball(w, d, pg_v2_add(origin, pg_v2(spacing * (pg_fix)i, spacing * (pg_fix)j)), &here[i]);
-            if (r == PG_OK && i == 0 && j == 0 && first != NULL) *first = here[0];
-            if (r == PG_OK && i > 0) r = link(w, d, here[i - 1u], here[i], spacing);
-            if (r == PG_OK && j > 0) r = link(w, d, below[i], here[i], spacing);
-            if (r == PG_OK && j > 0 && i > 0) r = link(w, d, below[i - 1u], here[i], diagonal);
-            if (r == PG_OK && j > 0 && i > 0) r = link(w, d, below[i], here[i - 1u], diagonal);
+            if (j > 0) below_here = row[i]; /* the row below's, before this row's replaces it */
+            r = ball(w, d, pg_v2_add(origin, pg_v2(spacing * (pg_fix)i, spacing * (pg_fix)j)), &row[i]);
+            if (r == PG_OK && i == 0 && j == 0 && first != NULL) *first = row[0];
+            if (r == PG_OK && i > 0) r = link(w, d, row[i - 1u], row[i], spacing);
+            if (r == PG_OK && j > 0) r = link(w, d, below_here, row[i], spacing);
+            if (r == PG_OK && j > 0 && i > 0) r = link(w, d, below_left, row[i], diagonal);
+            if (r == PG_OK && j > 0 && i > 0) r = link(w, d, below_here, row[i - 1u], diagonal);
+            below_left = below_here;
         }
-        for (i = 0; i < columns; ++i) below[i] = here[i];
     }
     return r;
 }

@@ -19,6 +19,8 @@ enum {
     PG_BODY_FLAG_SPIN_CLAMPED = 1u << 6
 };
 
+/* The fields are ordered so that every int64 lands on a multiple of 8 without padding
+ * (168 bytes, the sum of the fields rounded up to 8): a world holds one per body slot. */
 typedef struct pg_body {
     uint32_t generation;
     uint32_t flags;
@@ -30,11 +32,13 @@ typedef struct pg_body {
     pg_rot rot;              /* derived from angle */
     pg_vec2 v;
     pg_fix w;
+    pg_fix sleep_time;
     int64_t force_x, force_y, torque; /* Q48.16, cleared after each step */
-    pg_fix linear_damping, angular_damping, gravity_scale;
+    pg_fix linear_damping, angular_damping;
     int64_t mass, inertia;            /* Q32.32 kg, Q28.36 kg m^2 */
     int64_t inv_mass, inv_inertia;    /* Q25.38 (1/kg, 1/(kg m^2)); 0 for infinite */
-    pg_fix sleep_time;
+    uint64_t user_data;
+    pg_fix gravity_scale;
     /* derived from the shapes and local_center (pg__body_set_turn_extents), for continuous
      * collision of turning bodies: how far any shape's core reaches from the centre of
      * mass (an L1 bound; 0 when turning moves no surface, as for a centred circle) and the
@@ -45,7 +49,6 @@ typedef struct pg_body {
     uint32_t shape_count;
     uint32_t first_joint;    /* the body's joints, a list through pg_joint next_a / next_b
                                 (derived from the joint pool: rebuilt on a restore) */
-    uint64_t user_data;
 } pg_body;
 
 /* awake and movable: takes part in the solver (inline: the step asks per body and per contact) */

@@ -18,10 +18,14 @@
  * (Q8.24 1/m). */
 typedef struct row_coeffs { int32_t lA_x, lA_y, lB_x, lB_y, gA, gB; } row_coeffs;
 
+/* The int64 fields come first so that none needs padding (144 bytes). */
 typedef struct constraint_point {
     int64_t nrA, xrA, nrB, xrB;      /* each anchor r as n . r and r x n (Q16.16 m, at the
                                         step's start): what the separation needs of it;
                                         below 2^31.5, the length of r */
+    int64_t separation;              /* from the last relax pass, or the step's start:
+                                        positions have not moved since, so the next soft
+                                        pass reuses it */
     pg_fix adjusted_separation;
     pg_fix cnA, cnB, ctA, ctB;       /* r x n, r x t: Q16.16 m */
     row_coeffs nrow, trow;           /* the normal and the tangent row */
@@ -31,9 +35,6 @@ typedef struct constraint_point {
     pg_fix approach_start, approach_accel; /* with restitution: the relative normal speed
                                         at the step's start, and what gravity and forces
                                         add to it per second (APPROACH) */
-    int64_t separation;              /* from the last relax pass, or the step's start:
-                                        positions have not moved since, so the next soft
-                                        pass reuses it */
     pg_fix normal_impulse, tangent_impulse, max_normal_impulse;
     pg_fix deep_push;                /* < 0: the push-out past that cap, which the pseudo row
                                         adds to the pseudo relative speed; else 0 (DEEP
@@ -42,28 +43,30 @@ typedef struct constraint_point {
                                         the contact's push_impulse */
 } constraint_point;
 
+/* One per contact slot in the world's scratch (336 bytes): the point count and the flags
+ * (each 0 or 1) are bytes, after the 32-bit fields. */
 typedef struct contact_constraint {
     uint32_t a, b;           /* solver body slots; the static dummy for a static side */
     uint32_t contact;
     pg_dir n;
-    int32_t count;
-    int32_t soft_static;     /* one side cannot move: stiffer softness; 0 or 1, an index */
-    int32_t round_a, round_b;/* a circle centred on its body's centre of mass: its surface
-                                looks the same however it turns, and its normal passes
-                                through the centre (no torque) */
-    int32_t normal_linear;   /* r x n = 0 on both sides of every point: the normal rows have
-                                no angular part (two round sides, or round and static) */
     pg_fix restitution;
-    int32_t block;           /* the two normal rows are solved together (BLOCK) */
     int32_t e01, e10;        /* Q2.30: what a unit of lambda on point 1 does to point 0's
                                 normal speed, and the other way; |e| <= 1 */
     int32_t inv_det;         /* Q8.24: 1 / (1 - e01 e10), at most 16 */
-    int32_t deep;            /* a point has had deep_push < 0 in this step, or starts it
+    uint8_t count;           /* 1 or 2 */
+    uint8_t soft_static;     /* one side cannot move: stiffer softness; 0 or 1, an index */
+    uint8_t round_a, round_b;/* a circle centred on its body's centre of mass: its surface
+                                looks the same however it turns, and its normal passes
+                                through the centre (no torque) */
+    uint8_t normal_linear;   /* r x n = 0 on both sides of every point: the normal rows have
+                                no angular part (two round sides, or round and static) */
+    uint8_t block;           /* the two normal rows are solved together (BLOCK) */
+    uint8_t deep;            /* a point has had deep_push < 0 in this step, or starts it
                                 with a pseudo impulse (DEEP PUSH) */
-    int32_t central_friction;/* two points and friction on: the one friction row of the
+    uint8_t central_friction;/* two points and friction on: the one friction row of the
                                 manifold, in p[0] (CENTRAL FRICTION) */
-    int32_t twin;            /* equal inverse masses on both sides (TWINS) */
-    int32_t rows_ready;      /* the rows' coefficients, friction ratios and the block are set
+    uint8_t twin;            /* equal inverse masses on both sides (TWINS) */
+    uint8_t rows_ready;      /* the rows' coefficients, friction ratios and the block are set
                                 (LAZY ROWS, in prepare_constraints) */
     constraint_point p[2];
 } constraint;
@@ -953,15 +956,15 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
     c->b = activeB ? ct->body_b : dummy;
     c->contact = i;
     c->n = ct->normal;
-    c->count = ct->point_count;
+    c->count = (uint8_t)ct->point_count; /* 1 or 2: contacts without points have no constraint */
     /* A side that cannot move gets the stiffer softness, and so does a pair whose
      * masses differ 4:1 or more: a soft contact's steady overlap grows with the load
      * over the lighter body's mass, and this halves it where the ratio is large.
      * (Inverse masses are >= 0: x / 4 is x >> 2, without the rounding toward 0.) */
     c->twin = A->inv_mass == B->inv_mass;
     c->soft_static = A->inv_mass == 0 || B->inv_mass == 0 || (A->inv_mass >> 2) >= B->inv_mass || (B->inv_mass >> 2) >= A->inv_mass;
-    c->round_a = centred_circle(w, ct->shape_a, ct->body_a);
-    c->round_b = centred_circle(w, ct->shape_b, ct->body_b);
+    c->round_a = (uint8_t)centred_circle(w, ct->shape_a, ct->body_a);
+    c->round_b = (uint8_t)centred_circle(w, ct->shape_b, ct->body_b);
     if (!c->round_a) bodies[c->a].turns_anchors = 1;
     if (!c->round_b) bodies[c->b].turns_anchors = 1;
     c->normal_linear = 1;
@@ -1018,7 +1021,10 @@ static void prepare_constraint(const step_context *ctx, solver_body *bodies, con
         if (p->normal_impulse != 0 || p->tangent_impulse != 0) held = 1;
         p->relative_velocity = 0; /* set before the point first pushes (APPROACH) */
         p->approach_start = p->approach_accel = 0;
-        if ((p->deep_impulse = (pg_fix)clamp_lambda(cp->push_impulse, 0, LAMBDA_MAX)) != 0) c->deep = held = *ctx->deep_seen = 1;
+        if ((p->deep_impulse = (pg_fix)clamp_lambda(cp->push_impulse, 0, LAMBDA_MAX)) != 0) {
+            c->deep = 1;
+            held = *ctx->deep_seen = 1;
+        }
     }
     if (c->restitution != 0) {
         velocity va = load_velocity(&bodies[c->a]), vb = load_velocity(&bodies[c->b]), aa, ab;

@@ -148,7 +148,10 @@ pg_result pg__update_contacts(pg_world *w)
 {
     uint32_t n_proxies = 0, n_pairs = 0, s, i = 0, j, out = 0, n_old = w->contact_count;
     uint64_t okey;
-    pg_contact *old = w->contacts, *next = w->contacts_next;
+    /* The merged list is built in the scratch, free once the broadphase has written the
+     * pairs, and copied over the old one at the end: one list of max_contacts in the
+     * world's memory instead of two. */
+    pg_contact *old = w->contacts, *next = (pg_contact *)w->broadphase_scratch;
     int overflow;
     uint64_t dropped;
 
@@ -229,8 +232,7 @@ pg_result pg__update_contacts(pg_world *w)
             if (pg__body_is_active(bb) && ba->type != PG_BODY_STATIC && !pg__body_is_active(ba)) pg__wake_body(w, c->body_a);
         }
     }
-    w->contacts = next;
-    w->contacts_next = old;
+    for (j = 0; j < out; ++j) old[j] = next[j];
     w->contact_count = out;
     return PG_OK;
 }

@@ -160,9 +160,57 @@ static pg__big pg__big_mul(pg__big a, pg__big b)
     return r;
 }
 
-static pg__big pg__big_mul_i64(pg__big a, int64_t k) { return pg__big_mul(a, pg__big_i64(k)); }
+/* |v| as an unsigned number (INT64_MIN included) */
+static uint64_t pg__u64_abs(int64_t v) { return v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v; }
 
-static pg__big pg__big_mul2(int64_t a, int64_t b) { return pg__big_mul(pg__big_i64(a), pg__big_i64(b)); }
+/* a k modulo 2^384, as pg__big_mul(a, pg__big_i64(k)) gives it: a |k| by a 2-limb
+ * multiplier, negated when k < 0 (both are the product modulo 2^384). A 2-limb loop
+ * instead of a 12-limb one, and no 48-byte copy of k on the stack. */
+static pg__big pg__big_mul_i64(pg__big a, int64_t k)
+{
+    pg__big r;
+    uint64_t m = pg__u64_abs(k);
+    uint32_t b[2];
+    int i, j;
+    b[0] = (uint32_t)(m & 0xFFFFFFFFu);
+    b[1] = (uint32_t)(m >> 32);
+    for (i = 0; i < PG__BIG_LIMBS; ++i) r.w[i] = 0;
+    for (j = 0; j < 2; ++j) {
+        uint64_t carry = 0;
+        if (b[j] == 0) continue;
+        for (i = 0; i + j < PG__BIG_LIMBS; ++i) {
+            uint64_t t = (uint64_t)a.w[i] * b[j] + r.w[i + j] + carry; /* < 2^64 */
+            r.w[i + j] = (uint32_t)(t & 0xFFFFFFFFu);
+            carry = t >> 32;
+        }
+    }
+    return k < 0 ? pg__big_neg(r) : r;
+}
+
+/* a b exactly (|a b| <= 2^126), sign-extended to 384 bits: the 4-limb product of the
+ * magnitudes, negated when the signs differ. */
+static pg__big pg__big_mul2(int64_t a, int64_t b)
+{
+    pg__big r;
+    uint64_t ma = pg__u64_abs(a), mb = pg__u64_abs(b);
+    uint32_t x[2], y[2];
+    int i, j;
+    x[0] = (uint32_t)(ma & 0xFFFFFFFFu);
+    x[1] = (uint32_t)(ma >> 32);
+    y[0] = (uint32_t)(mb & 0xFFFFFFFFu);
+    y[1] = (uint32_t)(mb >> 32);
+    for (i = 0; i < PG__BIG_LIMBS; ++i) r.w[i] = 0;
+    for (i = 0; i < 2; ++i) {
+        uint64_t carry = 0;
+        for (j = 0; j < 2; ++j) {
+            uint64_t t = (uint64_t)x[i] * y[j] + r.w[i + j] + carry; /* < 2^64 */
+            r.w[i + j] = (uint32_t)(t & 0xFFFFFFFFu);
+            carry = t >> 32;
+        }
+        r.w[i + 2] = (uint32_t)carry;
+    }
+    return (a < 0) != (b < 0) ? pg__big_neg(r) : r;
+}
 
 /* a * 2^n, 0 <= n < 384 (bits shifted out are lost). */
 static pg__big pg__big_shl(pg__big a, int n)
