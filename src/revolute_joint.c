@@ -125,15 +125,23 @@ void pg__revolute_joint_prepare(joint_constraint *c, const step_context *ctx)
 {
     const pg_joint *j = c->src;
     pg__joint_point_init(&c->point, &c->A, &c->B);
-    pg__joint_row_angular(&c->angular, &c->A, &c->B);
     c->imp[0] = j->point_impulse[0];
     c->imp[1] = j->point_impulse[1];
-    c->motor_imp = has_motor(j) ? j->motor_impulse : 0;
-    c->lower_imp = has_limit(j) ? j->lower_impulse : 0;
-    c->upper_imp = has_limit(j) ? j->upper_impulse : 0;
-    c->motor_max = pg__joint_row_cap(c->angular.K, j->max_motor, ctx->h_q32);
-    if (c->motor_imp > c->motor_max) c->motor_imp = c->motor_max;
-    if (c->motor_imp < -c->motor_max) c->motor_imp = -c->motor_max;
+    c->motor_imp = c->lower_imp = c->upper_imp = c->motor_max = 0;
+    if (!has_motor(j) && !has_limit(j)) { /* a bare pin: the angular row is never read */
+        c->angular.on = 0;
+        c->angular.K = 0;
+        return;
+    }
+    pg__joint_row_angular(&c->angular, &c->A, &c->B);
+    if (has_limit(j)) {
+        c->lower_imp = j->lower_impulse;
+        c->upper_imp = j->upper_impulse;
+    }
+    if (has_motor(j)) {
+        c->motor_max = pg__joint_row_cap(c->angular.K, j->max_motor, ctx->h_q32);
+        c->motor_imp = clamp64(j->motor_impulse, c->motor_max);
+    }
 }
 
 void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
@@ -141,34 +149,45 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
     if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
-    pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
+    joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on && (c->motor_imp | c->lower_imp | c->upper_imp) != 0) /* a row of lambda 0 changes nothing */
         joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_store(bodies, &c->A, &A);
     joint_store(bodies, &c->B, &B);
 }
 
-void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
+/* A pass, inline in the three forms the stages call (solve; first relax sweep; later
+ * sweeps), so each is specialised. */
+PG__INLINE_PASS void revolute_pass(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     int64_t ax = 0, ay = 0, bx = 0, by = 0;
     if (c->point.S == 0) return;
     if (moved && joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
-    if (has_motor(j)) pg__joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
-    if (has_limit(j)) {
-        pg_angle rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
-        int64_t angle = pg_angle_to_radians(rel);
-        pg__joint_limit_solve(&c->angular, &c->lower_imp, &A, &B, angle - j->lower, 1, &c->soft, use_bias, ctx->n);
-        pg__joint_limit_solve(&c->angular, &c->upper_imp, &A, &B, angle - j->upper, -1, &c->soft, use_bias, ctx->n);
+    if ((j->flags & (PG_JOINT_FLAG_MOTOR | PG_JOINT_FLAG_LIMIT)) != 0) {
+        if (has_motor(j)) pg__joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
+        if (has_limit(j)) {
+            pg_angle rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
+            int64_t angle = pg_angle_to_radians(rel);
+            pg__joint_limit_solve(&c->angular, &c->lower_imp, &A, &B, angle - j->lower, 1, &c->soft, use_bias, ctx->n);
+            pg__joint_limit_solve(&c->angular, &c->upper_imp, &A, &B, angle - j->upper, -1, &c->soft, use_bias, ctx->n);
+        }
     }
     if (use_bias) { /* a relax sweep has no bias: the point's position error is not read */
         joint_anchor_now(&c->A, bodies, &ax, &ay);
         joint_anchor_now(&c->B, bodies, &bx, &by);
     }
-    pg__joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
+    joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
     joint_store(bodies, &c->A, &A);
     joint_store(bodies, &c->B, &B);
+}
+
+void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
+{
+    if (use_bias) revolute_pass(c, bodies, ctx, 1, moved);
+    else if (moved) revolute_pass(c, bodies, ctx, 0, 1);
+    else revolute_pass(c, bodies, ctx, 0, 0);
 }
 
 void pg__revolute_joint_store(const joint_constraint *c, pg_joint *j)
