@@ -100,8 +100,8 @@ void pg__joint_point_orient(joint_point *p, pg_vec2 rA, pg_vec2 rB);
 /* ---- the substeps (inline) ---- */
 /* A side's lever now: the step's lever turned by the body's turn since (its dq, kept
  * because prepare set turns_anchors). A body turns only when positions are integrated,
- * once a substep, while the passes visit a joint ten times (warm start, solve, relax
- * sweeps): the lever is turned again only when dq is not the one it was made for.
+ * once a substep, while the passes visit a joint three times (warm start, solve, relax;
+ * a weld ten): the lever is turned again only when dq is not the one it was made for.
  * Returns 1 when it changed. */
 static inline int joint_side_turn(joint_side *s, const solver_body *bodies)
 {
