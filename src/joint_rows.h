@@ -157,25 +157,26 @@ static inline int64_t clamp64(int64_t v, int64_t limit) { return v < -limit ? -l
 
 /* The point block's kernels, inline so that a kind's pass specialises them (use_soft a
  * constant) and keeps the velocities in registers; the pg__ forms below are the same
- * out of line for the kinds whose passes are rare. */
+ * out of line for the kinds whose passes are rare. Plain inline, not forced: an -Os
+ * build (Cortex-M) keeps one copy, an -O3 build inlines them where they are called. */
 /* The soft step's new lambda change from v (the row's relative speed) and bias: with
  * bias (soft) -ms (v + bias) - is l, without it (rigid) -v. v + bias is held within
  * +-2^32 (beyond any speed the kernel keeps) so the products fit int64. */
-PG__INLINE_ROW int64_t joint_soft_delta(int64_t v, int64_t bias, int64_t acc, const softness *s, int use_soft)
+static inline int64_t joint_soft_delta(int64_t v, int64_t bias, int64_t acc, const softness *s, int use_soft)
 {
     if (!use_soft) return -clamp64(v, INT64_C(1) << 32);
     return -row_round(s->mass_scale * clamp64(v + bias, INT64_C(1) << 32), 30) - row_round((int64_t)s->impulse_scale * acc, 30);
 }
 
 /* The relative velocity of B's anchor against A's: (vB + wB x rB) - (vA + wA x rA). */
-PG__INLINE_ROW void joint_point_speed(const velocity *A, const velocity *B, pg_vec2 rA, pg_vec2 rB, int64_t *cx, int64_t *cy)
+static inline void joint_point_speed(const velocity *A, const velocity *B, pg_vec2 rA, pg_vec2 rB, int64_t *cx, int64_t *cy)
 {
     *cx = B->x - A->x + pg__round_shift64(A->w * rA.y - B->w * rB.y, 16);
     *cy = B->y - A->y + pg__round_shift64(B->w * rB.x - A->w * rA.x, 16);
 }
 
 /* Apply a point block's lambda change (dx, dy). */
-PG__INLINE_ROW void joint_point_apply(const joint_point *p, velocity *A, velocity *B, int64_t dx, int64_t dy)
+static inline void joint_point_apply(const joint_point *p, velocity *A, velocity *B, int64_t dx, int64_t dy)
 {
     A->x -= row_round(p->mA[0] * dx + p->mA[1] * dy, 30);
     A->y -= row_round(p->mA[1] * dx + p->mA[2] * dy, 30);
@@ -186,7 +187,7 @@ PG__INLINE_ROW void joint_point_apply(const joint_point *p, velocity *A, velocit
 }
 
 /* A point block's pass: C (m) is B's anchor less A's now; soft or rigid (C unread). */
-PG__INLINE_ROW void joint_point_solve(joint_constraint *c, velocity *A, velocity *B, int64_t Cx, int64_t Cy, const softness *s, int use_soft)
+static inline void joint_point_solve(joint_constraint *c, velocity *A, velocity *B, int64_t Cx, int64_t Cy, const softness *s, int use_soft)
 {
     int64_t vx, vy, bx = 0, by = 0, nx, ny;
     joint_point_speed(A, B, c->A.lever_now, c->B.lever_now, &vx, &vy);

@@ -156,8 +156,8 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
     joint_store(bodies, &c->B, &B);
 }
 
-/* A pass, inline in the three forms the stages call (solve; first relax sweep; later
- * sweeps), so each is specialised. */
+/* A pass, inline in the two forms the stages call (the solve pass, with bias; a relax
+ * sweep, without), so each is specialised. */
 PG__INLINE_PASS void revolute_pass(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
@@ -186,8 +186,7 @@ PG__INLINE_PASS void revolute_pass(joint_constraint *c, solver_body *bodies, con
 void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     if (use_bias) revolute_pass(c, bodies, ctx, 1, moved);
-    else if (moved) revolute_pass(c, bodies, ctx, 0, 1);
-    else revolute_pass(c, bodies, ctx, 0, 0);
+    else revolute_pass(c, bodies, ctx, 0, moved);
 }
 
 void pg__revolute_joint_store(const joint_constraint *c, pg_joint *j)
