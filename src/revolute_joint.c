@@ -114,6 +114,16 @@ pg_result pg_revolute_joint_get_def(const pg_world *world, pg_joint_id id, pg_re
 }
 
 /* ---- the rows ------------------------------------------------------------------------------ */
+/* gcc's -Os (the Cortex-M builds) keeps one copy of the pass and calls the point block's
+ * shared out-of-line kernels; other builds inline them into each form of the pass. The
+ * same arithmetic either way, so the same bits. */
+#if defined(__OPTIMIZE_SIZE__)
+#define revolute_point_solve pg__joint_point_solve
+#define revolute_point_apply pg__joint_point_apply
+#else
+#define revolute_point_solve joint_point_solve
+#define revolute_point_apply joint_point_apply
+#endif
 /* The pin is a 2x2 point block; the motor and the two limits share one angular row
  * (wB - wA). Order in a pass, as Box2D v3's: motor, limits, then the point, so the point
  * has the last word. */
@@ -149,7 +159,7 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
     if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
-    joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
+    revolute_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on && (c->motor_imp | c->lower_imp | c->upper_imp) != 0) /* a row of lambda 0 changes nothing */
         joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_store(bodies, &c->A, &A);
@@ -178,15 +188,19 @@ PG__INLINE_PASS void revolute_pass(joint_constraint *c, solver_body *bodies, con
         joint_anchor_now(&c->A, bodies, &ax, &ay);
         joint_anchor_now(&c->B, bodies, &bx, &by);
     }
-    joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
+    revolute_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
     joint_store(bodies, &c->A, &A);
     joint_store(bodies, &c->B, &B);
 }
 
 void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
+#if defined(__OPTIMIZE_SIZE__)
+    revolute_pass(c, bodies, ctx, use_bias, moved);
+#else
     if (use_bias) revolute_pass(c, bodies, ctx, 1, moved);
     else revolute_pass(c, bodies, ctx, 0, moved);
+#endif
 }
 
 void pg__revolute_joint_store(const joint_constraint *c, pg_joint *j)
