@@ -193,48 +193,24 @@ void pg__joint_point_impulse(const joint_point *p, const int64_t L[2], int64_t o
 }
 
 /* ---- the passes' rows (joint_rows.h); out of line: five kinds call them ---- */
-/* The soft step's new lambda from v (the row's relative speed) and bias: with bias (soft)
- * dl = -ms (v + bias) - is l, without it (rigid) dl = -v. v + bias is held within
- * +-2^32 (beyond any speed the kernel keeps) so the products fit int64. */
 int64_t pg__joint_soft_delta(int64_t v, int64_t bias, int64_t acc, const softness *s, int use_soft)
 {
-    int64_t target = clamp64(v + bias, INT64_C(1) << 32);
-    if (!use_soft) return -clamp64(v, INT64_C(1) << 32);
-    return -row_round(s->mass_scale * target, 30) - row_round((int64_t)s->impulse_scale * acc, 30);
+    return joint_soft_delta(v, bias, acc, s, use_soft);
 }
 
-/* The relative velocity of B's anchor against A's: (vB + wB x rB) - (vA + wA x rA). */
 void pg__joint_point_speed(const velocity *A, const velocity *B, pg_vec2 rA, pg_vec2 rB, int64_t *cx, int64_t *cy)
 {
-    *cx = B->x - A->x + pg__round_shift64(A->w * rA.y - B->w * rB.y, 16);
-    *cy = B->y - A->y + pg__round_shift64(B->w * rB.x - A->w * rA.x, 16);
+    joint_point_speed(A, B, rA, rB, cx, cy);
 }
 
 void pg__joint_point_apply(const joint_point *p, velocity *A, velocity *B, int64_t dx, int64_t dy)
 {
-    A->x -= row_round(p->mA[0] * dx + p->mA[1] * dy, 30);
-    A->y -= row_round(p->mA[1] * dx + p->mA[2] * dy, 30);
-    A->w -= row_round(p->gA[0] * dx + p->gA[1] * dy, 24);
-    B->x += row_round(p->mB[0] * dx + p->mB[1] * dy, 30);
-    B->y += row_round(p->mB[1] * dx + p->mB[2] * dy, 30);
-    B->w += row_round(p->gB[0] * dx + p->gB[1] * dy, 24);
+    joint_point_apply(p, A, B, dx, dy);
 }
 
-/* A point block's pass: C (m) is B's anchor less A's now; soft or rigid. */
-void pg__joint_point_solve(joint_constraint *c, velocity *A, velocity *B, int64_t Cx, int64_t Cy, const softness *s,
-                                     int use_soft)
+void pg__joint_point_solve(joint_constraint *c, velocity *A, velocity *B, int64_t Cx, int64_t Cy, const softness *s, int use_soft)
 {
-    int64_t vx, vy, bx = 0, by = 0, nx, ny;
-    pg__joint_point_speed(A, B, c->A.lever_now, c->B.lever_now, &vx, &vy);
-    if (use_soft) {
-        bx = row_round(s->bias_rate * clamp64(Cx, INT32_MAX), 16);
-        by = row_round(s->bias_rate * clamp64(Cy, INT32_MAX), 16);
-    }
-    nx = clamp64(c->imp[0] + pg__joint_soft_delta(vx, bx, c->imp[0], s, use_soft), LAMBDA_MAX);
-    ny = clamp64(c->imp[1] + pg__joint_soft_delta(vy, by, c->imp[1], s, use_soft), LAMBDA_MAX);
-    pg__joint_point_apply(&c->point, A, B, nx - c->imp[0], ny - c->imp[1]);
-    c->imp[0] = nx;
-    c->imp[1] = ny;
+    joint_point_solve(c, A, B, Cx, Cy, s, use_soft);
 }
 
 /* An equality row's pass (C: its position error). */

@@ -100,8 +100,8 @@ void pg__joint_point_orient(joint_point *p, pg_vec2 rA, pg_vec2 rB);
 /* ---- the substeps (inline) ---- */
 /* A side's lever now: the step's lever turned by the body's turn since (its dq, kept
  * because prepare set turns_anchors). A body turns only when positions are integrated,
- * once a substep, while the passes visit a joint ten times (warm start, solve, relax
- * sweeps): the lever is turned again only when dq is not the one it was made for.
+ * once a substep, while the passes visit a joint three times (warm start, solve, relax;
+ * a weld ten): the lever is turned again only when dq is not the one it was made for.
  * Returns 1 when it changed. */
 static inline int joint_side_turn(joint_side *s, const solver_body *bodies)
 {
@@ -155,14 +155,56 @@ static inline pg_angle joint_angle_now(const joint_side *s, const solver_body *b
 
 static inline int64_t clamp64(int64_t v, int64_t limit) { return v < -limit ? -limit : v > limit ? limit : v; }
 
+/* The point block's kernels, inline so that a kind's pass specialises them (use_soft a
+ * constant) and keeps the velocities in registers; the pg__ forms below are the same
+ * out of line for the kinds whose passes are rare. Plain inline, not forced: an -Os
+ * build (Cortex-M) keeps one copy, an -O3 build inlines them where they are called. */
 /* The soft step's new lambda change from v (the row's relative speed) and bias: with
- * bias (soft) -ms (v + bias) - is l, without it (rigid) -v. */
-int64_t pg__joint_soft_delta(int64_t v, int64_t bias, int64_t acc, const softness *s, int use_soft);
+ * bias (soft) -ms (v + bias) - is l, without it (rigid) -v. v + bias is held within
+ * +-2^32 (beyond any speed the kernel keeps) so the products fit int64. */
+static inline int64_t joint_soft_delta(int64_t v, int64_t bias, int64_t acc, const softness *s, int use_soft)
+{
+    if (!use_soft) return -clamp64(v, INT64_C(1) << 32);
+    return -row_round(s->mass_scale * clamp64(v + bias, INT64_C(1) << 32), 30) - row_round((int64_t)s->impulse_scale * acc, 30);
+}
+
 /* The relative velocity of B's anchor against A's: (vB + wB x rB) - (vA + wA x rA). */
-void pg__joint_point_speed(const velocity *A, const velocity *B, pg_vec2 rA, pg_vec2 rB, int64_t *cx, int64_t *cy);
+static inline void joint_point_speed(const velocity *A, const velocity *B, pg_vec2 rA, pg_vec2 rB, int64_t *cx, int64_t *cy)
+{
+    *cx = B->x - A->x + pg__round_shift64(A->w * rA.y - B->w * rB.y, 16);
+    *cy = B->y - A->y + pg__round_shift64(B->w * rB.x - A->w * rA.x, 16);
+}
+
 /* Apply a point block's lambda change (dx, dy). */
+static inline void joint_point_apply(const joint_point *p, velocity *A, velocity *B, int64_t dx, int64_t dy)
+{
+    A->x -= row_round(p->mA[0] * dx + p->mA[1] * dy, 30);
+    A->y -= row_round(p->mA[1] * dx + p->mA[2] * dy, 30);
+    A->w -= row_round(p->gA[0] * dx + p->gA[1] * dy, 24);
+    B->x += row_round(p->mB[0] * dx + p->mB[1] * dy, 30);
+    B->y += row_round(p->mB[1] * dx + p->mB[2] * dy, 30);
+    B->w += row_round(p->gB[0] * dx + p->gB[1] * dy, 24);
+}
+
+/* A point block's pass: C (m) is B's anchor less A's now; soft or rigid (C unread). */
+static inline void joint_point_solve(joint_constraint *c, velocity *A, velocity *B, int64_t Cx, int64_t Cy, const softness *s, int use_soft)
+{
+    int64_t vx, vy, bx = 0, by = 0, nx, ny;
+    joint_point_speed(A, B, c->A.lever_now, c->B.lever_now, &vx, &vy);
+    if (use_soft) {
+        bx = row_round(s->bias_rate * clamp64(Cx, INT32_MAX), 16);
+        by = row_round(s->bias_rate * clamp64(Cy, INT32_MAX), 16);
+    }
+    nx = clamp64(c->imp[0] + joint_soft_delta(vx, bx, c->imp[0], s, use_soft), LAMBDA_MAX);
+    ny = clamp64(c->imp[1] + joint_soft_delta(vy, by, c->imp[1], s, use_soft), LAMBDA_MAX);
+    joint_point_apply(&c->point, A, B, nx - c->imp[0], ny - c->imp[1]);
+    c->imp[0] = nx;
+    c->imp[1] = ny;
+}
+
+int64_t pg__joint_soft_delta(int64_t v, int64_t bias, int64_t acc, const softness *s, int use_soft);
+void pg__joint_point_speed(const velocity *A, const velocity *B, pg_vec2 rA, pg_vec2 rB, int64_t *cx, int64_t *cy);
 void pg__joint_point_apply(const joint_point *p, velocity *A, velocity *B, int64_t dx, int64_t dy);
-/* A point block's pass: C (m) is B's anchor less A's now; soft or rigid. */
 void pg__joint_point_solve(joint_constraint *c, velocity *A, velocity *B, int64_t Cx, int64_t Cy, const softness *s, int use_soft);
 /* An equality row's pass (C: its position error). */
 void pg__joint_row_solve(const joint_row *r, int64_t *acc, velocity *A, velocity *B, int64_t C, const softness *s, int use_soft);

@@ -23,7 +23,7 @@ void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body 
     uint32_t i;
     s->change = (joint_change *)area;
     s->cons = (joint_constraint *)(void *)(s->change + w->def.max_bodies + 1u);
-    s->count = 0;
+    s->count = s->weld_count = 0;
     for (i = 0; i < n_active; ++i) s->change[active[i]].x = s->change[active[i]].y = s->change[active[i]].w = 0;
     for (i = 0; i < w->joint_high; ++i) {
         const pg_joint *j = &w->joints[i];
@@ -61,7 +61,7 @@ void pg__joints_prepare(pg_joint_stage *s, const step_context *ctx, solver_body 
         switch (j->type) {
         case PG_JOINT_DISTANCE: pg__distance_joint_prepare(c, ctx); break;
         case PG_JOINT_REVOLUTE: pg__revolute_joint_prepare(c, ctx); break;
-        case PG_JOINT_WELD: pg__weld_joint_prepare(c, ctx); break;
+        case PG_JOINT_WELD: pg__weld_joint_prepare(c, ctx); s->weld_count++; break;
         case PG_JOINT_PRISMATIC: pg__prismatic_joint_prepare(c, ctx); break;
         default: pg__mouse_joint_prepare(c, ctx); break;
         }
@@ -103,18 +103,26 @@ static void pass(const pg_joint_stage *s, const step_context *ctx, solver_body *
 }
 
 void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies) { pass(s, ctx, bodies, 1, 0); }
-/* The relax stage sweeps the joints' rigid rows JOINT_RELAX_ITERATIONS times (springs
- * and soft parts act in the solve pass only). Gauss-Seidel carries a change one joint a
- * sweep, so after one sweep a long structure's relative velocities are far from
- * consistent, and a welded cantilever or a long chain under a heavy load swings for long
- * on its soft joints (test_joint_weld, test_joint_chain assert that they come to rest).
- * Without bias the extra sweeps add no energy (docs/joints.md). */
-#define JOINT_RELAX_ITERATIONS 8
+/* The relax stage: one sweep over every joint's rigid rows, as Box2D v3's one relax
+ * iteration (springs and soft parts act in the solve pass only; without bias a sweep adds
+ * no energy), then more sweeps over the welds alone. Gauss-Seidel carries a change one
+ * joint a sweep against the slot order; a pin hands on a force, but a weld also a
+ * bending moment, which grows along a welded cantilever with every box beyond the joint:
+ * with one sweep the moments at the wall lag the load and a cantilever of welds swings
+ * on its soft joints for long (test_joint_weld asserts that it comes to rest). Chains of
+ * pins and grids of them hold with the one sweep (test_joint_chain, pogon-bench's
+ * joint_grid and chain and their sanity figures, docs/joints.md). */
+#define JOINT_RELAX_SWEEPS 1
+#define WELD_RELAX_SWEEPS 8 /* the welds' sweeps, the first of them with every joint */
 
 void pg__joints_relax(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies)
 {
     int k;
-    for (k = 0; k < JOINT_RELAX_ITERATIONS; ++k) pass(s, ctx, bodies, 0, k == 0);
+    uint32_t i;
+    for (k = 0; k < JOINT_RELAX_SWEEPS; ++k) pass(s, ctx, bodies, 0, k == 0);
+    for (; k < WELD_RELAX_SWEEPS && s->weld_count > 0; ++k)
+        for (i = 0; i < s->count; ++i)
+            if (s->cons[i].src->type == PG_JOINT_WELD) pg__weld_joint_solve(&s->cons[i], bodies, ctx, 0, 0);
 }
 
 void pg__joints_store(const pg_joint_stage *s, pg_world *w)

@@ -9,6 +9,7 @@ typedef struct pg_joint_stage {
     joint_constraint *cons;
     uint32_t count;
     joint_change *change;  /* per solver body slot (solver_kernel.h) */
+    uint32_t weld_count;   /* how many of cons are welds */
 } pg_joint_stage;
 
 /* Bytes of the joints' scratch: max_joints constraints and a joint change per body slot. */

@@ -114,6 +114,16 @@ pg_result pg_revolute_joint_get_def(const pg_world *world, pg_joint_id id, pg_re
 }
 
 /* ---- the rows ------------------------------------------------------------------------------ */
+/* gcc's -Os (the Cortex-M builds) keeps one copy of the pass and calls the point block's
+ * shared out-of-line kernels; other builds inline them into each form of the pass. The
+ * same arithmetic either way, so the same bits. */
+#if defined(__OPTIMIZE_SIZE__)
+#define revolute_point_solve pg__joint_point_solve
+#define revolute_point_apply pg__joint_point_apply
+#else
+#define revolute_point_solve joint_point_solve
+#define revolute_point_apply joint_point_apply
+#endif
 /* The pin is a 2x2 point block; the motor and the two limits share one angular row
  * (wB - wA). Order in a pass, as Box2D v3's: motor, limits, then the point, so the point
  * has the last word. */
@@ -125,15 +135,23 @@ void pg__revolute_joint_prepare(joint_constraint *c, const step_context *ctx)
 {
     const pg_joint *j = c->src;
     pg__joint_point_init(&c->point, &c->A, &c->B);
-    pg__joint_row_angular(&c->angular, &c->A, &c->B);
     c->imp[0] = j->point_impulse[0];
     c->imp[1] = j->point_impulse[1];
-    c->motor_imp = has_motor(j) ? j->motor_impulse : 0;
-    c->lower_imp = has_limit(j) ? j->lower_impulse : 0;
-    c->upper_imp = has_limit(j) ? j->upper_impulse : 0;
-    c->motor_max = pg__joint_row_cap(c->angular.K, j->max_motor, ctx->h_q32);
-    if (c->motor_imp > c->motor_max) c->motor_imp = c->motor_max;
-    if (c->motor_imp < -c->motor_max) c->motor_imp = -c->motor_max;
+    c->motor_imp = c->lower_imp = c->upper_imp = c->motor_max = 0;
+    if (!has_motor(j) && !has_limit(j)) { /* a bare pin: the angular row is never read */
+        c->angular.on = 0;
+        c->angular.K = 0;
+        return;
+    }
+    pg__joint_row_angular(&c->angular, &c->A, &c->B);
+    if (has_limit(j)) {
+        c->lower_imp = j->lower_impulse;
+        c->upper_imp = j->upper_impulse;
+    }
+    if (has_motor(j)) {
+        c->motor_max = pg__joint_row_cap(c->angular.K, j->max_motor, ctx->h_q32);
+        c->motor_imp = clamp64(j->motor_impulse, c->motor_max);
+    }
 }
 
 void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
@@ -141,34 +159,48 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     if (c->point.S == 0) return;
     if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
-    pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
+    revolute_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on && (c->motor_imp | c->lower_imp | c->upper_imp) != 0) /* a row of lambda 0 changes nothing */
         joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_store(bodies, &c->A, &A);
     joint_store(bodies, &c->B, &B);
 }
 
-void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
+/* A pass, inline in the two forms the stages call (the solve pass, with bias; a relax
+ * sweep, without), so each is specialised. */
+PG__INLINE_PASS void revolute_pass(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
     velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
     int64_t ax = 0, ay = 0, bx = 0, by = 0;
     if (c->point.S == 0) return;
     if (moved && joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
-    if (has_motor(j)) pg__joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
-    if (has_limit(j)) {
-        pg_angle rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
-        int64_t angle = pg_angle_to_radians(rel);
-        pg__joint_limit_solve(&c->angular, &c->lower_imp, &A, &B, angle - j->lower, 1, &c->soft, use_bias, ctx->n);
-        pg__joint_limit_solve(&c->angular, &c->upper_imp, &A, &B, angle - j->upper, -1, &c->soft, use_bias, ctx->n);
+    if ((j->flags & (PG_JOINT_FLAG_MOTOR | PG_JOINT_FLAG_LIMIT)) != 0) {
+        if (has_motor(j)) pg__joint_motor_solve(&c->angular, &c->motor_imp, &A, &B, j->motor_speed, c->motor_max);
+        if (has_limit(j)) {
+            pg_angle rel = joint_angle_now(&c->B, bodies) - joint_angle_now(&c->A, bodies) - j->reference_angle;
+            int64_t angle = pg_angle_to_radians(rel);
+            pg__joint_limit_solve(&c->angular, &c->lower_imp, &A, &B, angle - j->lower, 1, &c->soft, use_bias, ctx->n);
+            pg__joint_limit_solve(&c->angular, &c->upper_imp, &A, &B, angle - j->upper, -1, &c->soft, use_bias, ctx->n);
+        }
     }
     if (use_bias) { /* a relax sweep has no bias: the point's position error is not read */
         joint_anchor_now(&c->A, bodies, &ax, &ay);
         joint_anchor_now(&c->B, bodies, &bx, &by);
     }
-    pg__joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
+    revolute_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
     joint_store(bodies, &c->A, &A);
     joint_store(bodies, &c->B, &B);
+}
+
+void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
+{
+#if defined(__OPTIMIZE_SIZE__)
+    revolute_pass(c, bodies, ctx, use_bias, moved);
+#else
+    if (use_bias) revolute_pass(c, bodies, ctx, 1, moved);
+    else revolute_pass(c, bodies, ctx, 0, moved);
+#endif
 }
 
 void pg__revolute_joint_store(const joint_constraint *c, pg_joint *j)
