@@ -8,8 +8,9 @@
 #ifndef POGON_CONFIG_H
 #define POGON_CONFIG_H
 
-/** Entries per full turn of the sine table, as a power of two: 8 (256 entries, 1 KiB)
- * to 12 (4096 entries, 16 KiB). Sine and cosine interpolate linearly between entries;
+/** Entries per full turn of the sine table, as a power of two: 8 (256 entries) to 12
+ * (4096). The library stores the first quarter of the turn and mirrors it, 2^bits / 4 + 1
+ * entries of 4 bytes: 260 bytes at 8, 4100 at 12. Sine and cosine interpolate linearly between entries;
  * the interpolation error is about (2 pi / 2^bits)^2 / 8: 4.7e-6 at 10 bits and 2.9e-7
  * at 12. The default is 12 because rotations scale vertices by up to that error: at
  * 10 bits a vertex 50 m from its body's centre would wobble by 15 Q16.16 steps as the
