@@ -29,7 +29,7 @@ static int shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb)
 static int joined_apart(const pg_world *w, uint32_t sa, uint32_t sb)
 {
     uint32_t a = w->shapes[sa].body, b = w->shapes[sb].body;
-    return w->bodies[a].first_joint != PG_NULL_INDEX && w->bodies[b].first_joint != PG_NULL_INDEX && pg__joint_blocks_collision(w, a, b);
+    return PG_CONFIG_JOINTS && w->bodies[a].first_joint != PG_NULL_INDEX && w->bodies[b].first_joint != PG_NULL_INDEX && pg__joint_blocks_collision(w, a, b);
 }
 
 /* The same for continuous.c; the merge below keeps its inlined copy. */

@@ -53,6 +53,20 @@
 #error "PG_CONFIG_EFFECTS must be a combination of the PG_EFFECT_* bits (0x00 .. 0x7F)"
 #endif
 
+/** 1 (default): the library has joints (pogon/joint.h). 0: it leaves them out: no joint
+ * solver, joint pool or joint code in the step. The functions of pogon/joint.h stay
+ * declared and linkable (src/joints_left_out.c), so programs, commands and scene files
+ * build unchanged, and each fails by name: creating a joint gets PG_ERR_INVALID_ARGUMENT
+ * with a message naming this switch, a call with a joint handle PG_ERR_STALE_HANDLE. A
+ * world definition with max_joints above 0 is refused the same way, and
+ * pg_default_world_def gives max_joints 0. Bodies step exactly as in the full build. */
+#ifndef PG_CONFIG_JOINTS
+#define PG_CONFIG_JOINTS 1
+#endif
+#if PG_CONFIG_JOINTS != 0 && PG_CONFIG_JOINTS != 1
+#error "PG_CONFIG_JOINTS must be 0 or 1"
+#endif
+
 /** @name Numeric configuration
  * The switches above that change results, packed into one 32-bit value: replay files
  * and snapshots record it, and a file of another configuration is refused on load with
