@@ -58,7 +58,8 @@ static const pg_vec2 *chain_neighbour(const pg_world *w, const pg_shape *s, int 
 static void collide_shapes(const pg_world *w, uint32_t sa, uint32_t sb, pg_fix speculative, pg_manifold *m)
 {
     const pg_shape *a = &w->shapes[sa], *b = &w->shapes[sb];
-    int chain_a = a->geometry.kind == PG_SHAPE_CHAIN_SEGMENT, chain_b = b->geometry.kind == PG_SHAPE_CHAIN_SEGMENT;
+    int chain_a = PG_SHAPES_KEPT(PG_SHAPES_CHAIN) && a->geometry.kind == PG_SHAPE_CHAIN_SEGMENT;
+    int chain_b = PG_SHAPES_KEPT(PG_SHAPES_CHAIN) && b->geometry.kind == PG_SHAPE_CHAIN_SEGMENT;
     if (!chain_a && !chain_b) {
         pg_collide(&w->world_geoms[sa], &w->world_geoms[sb], speculative, m);
     } else if (chain_a && chain_b) {

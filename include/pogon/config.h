@@ -67,6 +67,33 @@
 #error "PG_CONFIG_JOINTS must be 0 or 1"
 #endif
 
+/** @name Shape kinds
+ * PG_CONFIG_SHAPES: the shape kinds the library is built with, a combination of the
+ * PG_SHAPES_* bits below; default 0x3F, all of them. A kind left out is refused wherever
+ * it would enter a world (pg_shape_create, the pg_make_* calls, snapshots and scene
+ * files: PG_ERR_INVALID_ARGUMENT, with a message naming this switch); its pg_geometry_*
+ * function returns PG_ERR_INVALID_ARGUMENT (it has no world to hold a message). What
+ * only that kind needs (its validation, chain collision, ear clipping) then has no code
+ * in the library. The kinds kept step exactly as in the full build. For example 0x03
+ * keeps circles and boxes; the box collider is the polygon collider (boxes take its fast
+ * path), and circles' mass is the capsule formula of length 0, so both stay.
+ * @{ */
+#define PG_SHAPES_CIRCLE 0x01u  /**< circles: pg_geometry_circle, pg_make_ball */
+#define PG_SHAPES_BOX 0x02u     /**< four-vertex polygons: pg_geometry_box, pg_make_box, pg_make_wall */
+#define PG_SHAPES_POLYGON 0x04u /**< polygons of 3 and 5..8 vertices: triangles, stars, pg_geometry_decompose, pg_make_concave */
+#define PG_SHAPES_CAPSULE 0x08u /**< capsules: pg_geometry_capsule, pg_make_capsule */
+#define PG_SHAPES_SEGMENT 0x10u /**< two-sided segments: pg_geometry_segment */
+#define PG_SHAPES_CHAIN 0x20u   /**< chain segments: pg_geometry_chain_segment, pg_make_chain */
+#ifndef PG_CONFIG_SHAPES
+#define PG_CONFIG_SHAPES 0x3Fu
+#endif
+#if ((PG_CONFIG_SHAPES) & ~0x3Fu) != 0 || ((PG_CONFIG_SHAPES) & 0x3Fu) == 0
+#error "PG_CONFIG_SHAPES must be a non-empty combination of the PG_SHAPES_* bits (0x01 .. 0x3F)"
+#endif
+/** Nonzero when this build keeps the kinds of `bits` (PG_SHAPES_*). */
+#define PG_SHAPES_KEPT(bits) (((bits) & (PG_CONFIG_SHAPES)) != 0)
+/** @} */
+
 /** @name Numeric configuration
  * The switches above that change results, packed into one 32-bit value: replay files
  * and snapshots record it, and a file of another configuration is refused on load with
