@@ -9,7 +9,11 @@
  *
  * Sine tables: one per size 2^8 .. 2^12 entries per full turn, Q2.30, rounded to nearest
  * with ties away from zero. Only the first quarter is computed; the rest is mirrored, so
- * sin(pi - x) == sin(x) and sin(-x) == -sin(x) hold exactly in the table.
+ * sin(pi - x) == sin(x) and sin(-x) == -sin(x) hold exactly in the table. The library
+ * keeps only that quarter (pg_sin_quarter_N, N/4 + 1 entries: a quarter of the flash) and
+ * mirrors it when it reads (src/trig.h); the full tables (pg_sin_table_N) are compiled
+ * only where PG_TRIG_ALL_TABLES is defined, by the tests that prove the two agree entry
+ * for entry and by the micro-benchmark.
  * CORDIC table: atan(2^-i) for i = 0..31 as binary angles (2^32 per turn).
  */
 #include <math.h>
@@ -31,6 +35,10 @@ int main(void)
         t[2 * q] = 0;
         for (int i = 2 * q + 1; i < n; ++i) t[i] = -t[i - 2 * q];
         printf("#if defined(PG_TRIG_ALL_TABLES) || PG_TRIG_TABLE_BITS == %d\n", bits);
+        printf("static const int32_t pg_sin_quarter_%d[%d] = {\n", bits, q + 1);
+        for (int i = 0; i <= q; ++i) printf("%s%lld,%s", i % 8 ? " " : "    ", t[i], i % 8 == 7 || i == q ? "\n" : "");
+        printf("};\n#endif\n\n");
+        printf("#if defined(PG_TRIG_ALL_TABLES)\n");
         printf("static const int32_t pg_sin_table_%d[%d] = {\n", bits, n);
         for (int i = 0; i < n; ++i) printf("%s%lld,%s", i % 8 ? " " : "    ", t[i], i % 8 == 7 ? "\n" : "");
         printf("};\n#endif\n\n");

@@ -65,6 +65,7 @@ pg_result pg_make_chain(pg_world *w, const pg_body_def *bd, const pg_shape_def *
                                         : points == NULL ? "pg_make_chain: points is NULL" : "pg_make_chain: out is NULL");
     out->index = 0;
     out->generation = 0;
+    if (!PG_SHAPES_KEPT(PG_SHAPES_CHAIN)) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, PG__LEFT_OUT_KIND("pg_make_chain"));
     {
         char buf[144];
         pg__text why = pg__text_in(buf, sizeof buf);

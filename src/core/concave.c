@@ -21,6 +21,10 @@ pg_result pg_geometry_decompose(const pg_vec2 *vertices, int32_t count, pg_geome
         pg__text_put(&why, vertices == NULL ? "vertices is NULL" : pieces == NULL ? "pieces is NULL" : "piece_count is NULL");
         return PG_ERR_NULL;
     }
+    if (!PG_SHAPES_KEPT(PG_SHAPES_POLYGON)) {
+        pg__text_put(&why, PG__LEFT_OUT_KIND("pg_geometry_decompose"));
+        return PG_ERR_INVALID_ARGUMENT;
+    }
     r = pg__decompose(vertices, count, &d, &why);
     if (r != PG_OK) return r;
     if (d.count > capacity) {
@@ -84,6 +88,7 @@ pg_result pg_make_concave(pg_world *w, const pg_body_def *bd, const pg_shape_def
                                         : vertices == NULL ? "pg_make_concave: vertices is NULL" : "pg_make_concave: out is NULL");
     out->index = 0;
     out->generation = 0;
+    if (!PG_SHAPES_KEPT(PG_SHAPES_POLYGON)) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, PG__LEFT_OUT_KIND("pg_make_concave"));
     pg__text_put(&why, "pg_make_concave: ");
     r = pg__decompose(vertices, count, &d, &why);
     if (r != PG_OK) return pg__fail(w, r, buf);

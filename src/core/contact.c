@@ -29,7 +29,7 @@ static int shapes_should_collide(const pg_world *w, uint32_t sa, uint32_t sb)
 static int joined_apart(const pg_world *w, uint32_t sa, uint32_t sb)
 {
     uint32_t a = w->shapes[sa].body, b = w->shapes[sb].body;
-    return w->bodies[a].first_joint != PG_NULL_INDEX && w->bodies[b].first_joint != PG_NULL_INDEX && pg__joint_blocks_collision(w, a, b);
+    return PG_CONFIG_JOINTS && w->bodies[a].first_joint != PG_NULL_INDEX && w->bodies[b].first_joint != PG_NULL_INDEX && pg__joint_blocks_collision(w, a, b);
 }
 
 /* The same for continuous.c; the merge below keeps its inlined copy. */
@@ -58,7 +58,8 @@ static const pg_vec2 *chain_neighbour(const pg_world *w, const pg_shape *s, int 
 static void collide_shapes(const pg_world *w, uint32_t sa, uint32_t sb, pg_fix speculative, pg_manifold *m)
 {
     const pg_shape *a = &w->shapes[sa], *b = &w->shapes[sb];
-    int chain_a = a->geometry.kind == PG_SHAPE_CHAIN_SEGMENT, chain_b = b->geometry.kind == PG_SHAPE_CHAIN_SEGMENT;
+    int chain_a = PG_SHAPES_KEPT(PG_SHAPES_CHAIN) && a->geometry.kind == PG_SHAPE_CHAIN_SEGMENT;
+    int chain_b = PG_SHAPES_KEPT(PG_SHAPES_CHAIN) && b->geometry.kind == PG_SHAPE_CHAIN_SEGMENT;
     if (!chain_a && !chain_b) {
         pg_collide(&w->world_geoms[sa], &w->world_geoms[sb], speculative, m);
     } else if (chain_a && chain_b) {

@@ -7,6 +7,7 @@
 #include "intmath.h"
 #include "joint_def.h"
 #include "joint_pool.h"
+#if PG_CONFIG_JOINTS /* else joints_left_out.c */
 
 #define LENGTH_MIN ((pg_fix)328)   /* 0.005 m: the linear slop; shorter has no direction */
 #define LENGTH_MAX PG_FIX_C(100)
@@ -246,3 +247,4 @@ void pg__distance_joint_impulse(const joint_constraint *c, int64_t out[3])
     out[1] = row_round(p * c->axial.d.y, 30);
     out[2] = 0;
 }
+#endif

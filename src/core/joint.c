@@ -5,6 +5,7 @@
 #include "error.h"
 #include "joint_def.h"
 #include "joint_pool.h"
+#if PG_CONFIG_JOINTS /* else joints_left_out.c */
 
 pg_result pg_joint_destroy(pg_world *world, pg_joint_id id)
 {
@@ -84,3 +85,4 @@ uint32_t pg_body_joints(const pg_world *world, pg_body_id body, pg_joint_id *out
     }
     return n;
 }
+#endif

@@ -9,6 +9,7 @@
 #include "prismatic_joint.h"
 #include "revolute_joint.h"
 #include "weld_joint.h"
+#if PG_CONFIG_JOINTS /* else joints_left_out.c */
 
 size_t pg__joint_scratch_bytes(uint32_t max_joints, uint32_t max_bodies)
 {
@@ -186,3 +187,4 @@ pg_result pg_joint_get_reaction(const pg_world *world, pg_joint_id id, pg_joint_
     out->torque = pg__mul64_shr(p[2], (int64_t)ctx.n << 1, 1);
     return PG_OK;
 }
+#endif

@@ -8,6 +8,7 @@
 #include "error.h"
 #include "joint_def.h"
 #include "joint_pool.h"
+#if PG_CONFIG_JOINTS /* else joints_left_out.c */
 
 pg_mouse_joint_def pg_default_mouse_joint_def(void)
 {
@@ -184,3 +185,4 @@ void pg__mouse_joint_impulse(const joint_constraint *c, int64_t out[3])
     pg__joint_point_impulse(&c->point, c->imp, out);
     out[2] = 0;
 }
+#endif

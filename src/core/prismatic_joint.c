@@ -7,6 +7,7 @@
 #include "intmath.h"
 #include "joint_def.h"
 #include "joint_pool.h"
+#if PG_CONFIG_JOINTS /* else joints_left_out.c */
 
 #define TRANSLATION_MAX PG_FIX_C(100)
 
@@ -254,3 +255,4 @@ void pg__prismatic_joint_impulse(const joint_constraint *c, int64_t out[3])
     out[1] = row_round(pa * c->axial.d.y + pp * c->perp.d.y, 30);
     out[2] = pg__joint_row_impulse(&c->angular, c->axial_imp);
 }
+#endif

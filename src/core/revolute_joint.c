@@ -5,6 +5,7 @@
 #include "error.h"
 #include "joint_def.h"
 #include "joint_pool.h"
+#if PG_CONFIG_JOINTS /* else joints_left_out.c */
 
 pg_revolute_joint_def pg_default_revolute_joint_def(void)
 {
@@ -217,3 +218,4 @@ void pg__revolute_joint_impulse(const joint_constraint *c, int64_t out[3])
     pg__joint_point_impulse(&c->point, c->imp, out);
     out[2] = pg__joint_row_impulse(&c->angular, c->motor_imp + c->lower_imp - c->upper_imp);
 }
+#endif

@@ -78,6 +78,7 @@ pg_result pg_geometry_segment(pg_vec2 a, pg_vec2 b, pg_geometry *out)
     pg_result r;
     if (out == NULL) return PG_ERR_NULL;
     clear_geometry(out);
+    if (!PG_SHAPES_KEPT(PG_SHAPES_SEGMENT)) return PG_ERR_INVALID_ARGUMENT;
     r = two_points(a, b, PG_ENV_MIN_THICKNESS);
     if (r != PG_OK) return r;
     out->kind = PG_SHAPE_SEGMENT;
@@ -101,6 +102,7 @@ pg_result pg_geometry_chain_segment(pg_vec2 before, pg_vec2 a, pg_vec2 b, pg_vec
     pg_result r;
     if (out == NULL) return PG_ERR_NULL;
     clear_geometry(out);
+    if (!PG_SHAPES_KEPT(PG_SHAPES_CHAIN)) return PG_ERR_INVALID_ARGUMENT;
     r = two_points(a, b, PG_ENV_MIN_THICKNESS);
     if (r != PG_OK) return r;
     if (!offset_ok(before) || !offset_ok(after)) return PG_ERR_ENVELOPE;
@@ -119,6 +121,7 @@ pg_result pg_geometry_capsule(pg_vec2 a, pg_vec2 b, pg_fix radius, pg_geometry *
     pg_result r;
     if (out == NULL) return PG_ERR_NULL;
     clear_geometry(out);
+    if (!PG_SHAPES_KEPT(PG_SHAPES_CAPSULE)) return PG_ERR_INVALID_ARGUMENT;
     if (!radius_ok(radius)) return radius <= 0 ? PG_ERR_DEGENERATE : PG_ERR_ENVELOPE;
     r = two_points(a, b, MIN_EDGE);
     if (r != PG_OK) return r;
@@ -137,6 +140,7 @@ pg_result pg_geometry_polygon(const pg_vec2 *vertices, int32_t count, pg_geometr
     if (out == NULL || vertices == NULL) return PG_ERR_NULL;
     clear_geometry(out);
     if (count < 3 || count > PG_MAX_VERTICES) return PG_ERR_INVALID_ARGUMENT;
+    if (!PG_SHAPES_KEPT(count == 4 ? PG_SHAPES_BOX : PG_SHAPES_POLYGON)) return PG_ERR_INVALID_ARGUMENT;
     for (i = 0; i < count; ++i)
         if (!offset_ok(vertices[i])) return PG_ERR_ENVELOPE;
     for (i = 0; i < count; ++i) { /* twice the signed area, relative to vertex 0 (|v| <= 2^22) */
@@ -204,6 +208,7 @@ pg_result pg_geometry_triangle(pg_vec2 center, pg_fix circumradius, pg_angle ang
     int i;
     if (out == NULL) return PG_ERR_NULL;
     clear_geometry(out);
+    if (!PG_SHAPES_KEPT(PG_SHAPES_POLYGON)) return PG_ERR_INVALID_ARGUMENT;
     if (circumradius <= 0) return PG_ERR_DEGENERATE;
     if (circumradius > PG_ENV_MAX_STATIC_REACH) return PG_ERR_ENVELOPE; /* then the polygon's own rules */
     for (i = 0; i < 3; ++i) {
@@ -273,10 +278,25 @@ pg_result pg__check_shape_def(const pg_world *world, pg_body_type type, const pg
     return PG_OK;
 }
 
+/* Whether this build keeps g's kind (a polygon's by its vertex count). */
+int pg__shape_kind_kept(const pg_geometry *g)
+{
+    switch (g->kind) {
+    case PG_SHAPE_CIRCLE: return PG_SHAPES_KEPT(PG_SHAPES_CIRCLE);
+    case PG_SHAPE_SEGMENT: return PG_SHAPES_KEPT(PG_SHAPES_SEGMENT);
+    case PG_SHAPE_CAPSULE: return PG_SHAPES_KEPT(PG_SHAPES_CAPSULE);
+    case PG_SHAPE_CHAIN_SEGMENT: return PG_SHAPES_KEPT(PG_SHAPES_CHAIN);
+    case PG_SHAPE_POLYGON: return PG_SHAPES_KEPT(g->count == 4 ? PG_SHAPES_BOX : PG_SHAPES_POLYGON);
+    default: return 1; /* not a kind: pg__validate_geometry refuses it */
+    }
+}
+
 /* What pg__validate_geometry's result means for a geometry the caller filled in. */
 static pg_result check_geometry(const pg_world *world, const pg_geometry *g)
 {
-    pg_result r = pg__validate_geometry(g);
+    pg_result r;
+    if (!pg__shape_kind_kept(g)) return pg__fail(world, PG_ERR_INVALID_ARGUMENT, PG__LEFT_OUT_KIND("geometry"));
+    r = pg__validate_geometry(g);
     switch (r) {
     case PG_OK: return PG_OK;
     case PG_ERR_NOT_CONVEX:
@@ -296,16 +316,16 @@ pg_result pg__validate_geometry(const pg_geometry *g)
     pg_result r;
     switch (g->kind) {
     case PG_SHAPE_CIRCLE:
-        r = g->count == 1 ? pg_geometry_circle(g->vertices[0], g->radius, &copy) : PG_ERR_INVALID_ARGUMENT;
+        r = PG_SHAPES_KEPT(PG_SHAPES_CIRCLE) && g->count == 1 ? pg_geometry_circle(g->vertices[0], g->radius, &copy) : PG_ERR_INVALID_ARGUMENT;
         break;
     case PG_SHAPE_SEGMENT:
-        r = g->count == 2 && g->radius == 0 ? pg_geometry_segment(g->vertices[0], g->vertices[1], &copy) : PG_ERR_INVALID_ARGUMENT;
+        r = PG_SHAPES_KEPT(PG_SHAPES_SEGMENT) && g->count == 2 && g->radius == 0 ? pg_geometry_segment(g->vertices[0], g->vertices[1], &copy) : PG_ERR_INVALID_ARGUMENT;
         break;
     case PG_SHAPE_CAPSULE:
-        r = g->count == 2 ? pg_geometry_capsule(g->vertices[0], g->vertices[1], g->radius, &copy) : PG_ERR_INVALID_ARGUMENT;
+        r = PG_SHAPES_KEPT(PG_SHAPES_CAPSULE) && g->count == 2 ? pg_geometry_capsule(g->vertices[0], g->vertices[1], g->radius, &copy) : PG_ERR_INVALID_ARGUMENT;
         break;
     case PG_SHAPE_CHAIN_SEGMENT:
-        r = g->count == 2 && g->radius == 0 ? pg_geometry_chain_segment(g->vertices[2], g->vertices[0], g->vertices[1], g->vertices[3], &copy)
+        r = PG_SHAPES_KEPT(PG_SHAPES_CHAIN) && g->count == 2 && g->radius == 0 ? pg_geometry_chain_segment(g->vertices[2], g->vertices[0], g->vertices[1], g->vertices[3], &copy)
                                             : PG_ERR_INVALID_ARGUMENT;
         break;
     case PG_SHAPE_POLYGON:
@@ -520,7 +540,7 @@ pg_result pg_make_ball(pg_world *w, const pg_body_def *bd, const pg_shape_def *s
 {
     pg_geometry g;
     pg_result r = pg_geometry_circle(pg_v2_zero(), radius, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "ball radius must be 0.005..50 m");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, PG_SHAPES_KEPT(PG_SHAPES_CIRCLE) ? "ball radius must be 0.005..50 m" : PG__LEFT_OUT_KIND("pg_make_ball"));
     return make_body(w, bd, sd, &g, 1, out);
 }
 
@@ -528,7 +548,7 @@ pg_result pg_make_capsule(pg_world *w, const pg_body_def *bd, const pg_shape_def
 {
     pg_geometry g;
     pg_result r = length < 0 ? PG_ERR_DEGENERATE : pg_geometry_capsule(pg_v2(-length / 2, 0), pg_v2(length - length / 2, 0), radius, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "capsule length must be 0.005..2000 m and radius 0.005..50 m (a dynamic or kinematic capsule reaches at most 50 m from its centre)");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, PG_SHAPES_KEPT(PG_SHAPES_CAPSULE) ? "capsule length must be 0.005..2000 m and radius 0.005..50 m (a dynamic or kinematic capsule reaches at most 50 m from its centre)" : PG__LEFT_OUT_KIND("pg_make_capsule"));
     return make_body(w, bd, sd, &g, 1, out);
 }
 
@@ -536,7 +556,7 @@ pg_result pg_make_box(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd
 {
     pg_geometry g;
     pg_result r = pg_geometry_box(width / 2, height / 2, pg_v2_zero(), 0, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "box sides must be 0.01..2000 m (0.01..100 m on a dynamic or kinematic body)");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, PG_SHAPES_KEPT(PG_SHAPES_BOX) ? "box sides must be 0.01..2000 m (0.01..100 m on a dynamic or kinematic body)" : PG__LEFT_OUT_KIND("pg_make_box"));
     return make_body(w, bd, sd, &g, 1, out);
 }
 
@@ -544,7 +564,7 @@ pg_result pg_make_triangle(pg_world *w, const pg_body_def *bd, const pg_shape_de
 {
     pg_geometry g;
     pg_result r = pg_geometry_triangle(pg_v2_zero(), circumradius, PG_ANGLE_QUARTER, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "triangle circumradius must be 0.0067..1000 m (at least 0.01 m thick; up to 50 m on a dynamic or kinematic body)");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, PG_SHAPES_KEPT(PG_SHAPES_POLYGON) ? "triangle circumradius must be 0.0067..1000 m (at least 0.01 m thick; up to 50 m on a dynamic or kinematic body)" : PG__LEFT_OUT_KIND("pg_make_triangle"));
     return make_body(w, bd, sd, &g, 1, out);
 }
 
@@ -553,7 +573,7 @@ pg_result pg_make_star(pg_world *w, const pg_body_def *bd, const pg_shape_def *s
     pg_geometry g[2];
     pg_result r = pg_geometry_triangle(pg_v2_zero(), circumradius, PG_ANGLE_QUARTER, &g[0]);
     if (r == PG_OK) r = pg_geometry_triangle(pg_v2_zero(), circumradius, PG_ANGLE_QUARTER + PG_ANGLE_HALF, &g[1]);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "star circumradius must be 0.0067..1000 m (at least 0.01 m thick; up to 50 m on a dynamic or kinematic body)");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, PG_SHAPES_KEPT(PG_SHAPES_POLYGON) ? "star circumradius must be 0.0067..1000 m (at least 0.01 m thick; up to 50 m on a dynamic or kinematic body)" : PG__LEFT_OUT_KIND("pg_make_star"));
     return make_body(w, bd, sd, g, 2, out);
 }
 
@@ -569,6 +589,6 @@ pg_result pg_make_wall(pg_world *w, const pg_body_def *bd, const pg_shape_def *s
     def.linear_velocity = pg_v2_zero();
     def.angular_velocity = 0;
     r = pg_geometry_box(width / 2, height / 2, pg_v2_zero(), 0, &g);
-    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, "wall sides must be 0.01..2000 m");
+    if (r != PG_OK) return w == NULL ? PG_ERR_NULL : geometry_failed(w, r, PG_SHAPES_KEPT(PG_SHAPES_BOX) ? "wall sides must be 0.01..2000 m" : PG__LEFT_OUT_KIND("pg_make_wall"));
     return make_body(w, &def, sd, &g, 1, out);
 }

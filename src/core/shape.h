@@ -13,4 +13,10 @@ pg_result pg__check_shape_def(const pg_world *world, pg_body_type type, const pg
  * caller updates the body's mass, geometry and sleep. */
 void pg__shape_attach(pg_world *world, uint32_t body, uint32_t i, const pg_shape_def *def, const pg_geometry *geometry);
 
+/* Whether this build keeps g's kind (PG_CONFIG_SHAPES, pogon/config.h; a polygon's kind
+ * is its vertex count: 4 a box, else a polygon), and the message of a kind it leaves
+ * out (`who` a string literal). */
+int pg__shape_kind_kept(const pg_geometry *g);
+#define PG__LEFT_OUT_KIND(who) who ": this build leaves this shape kind out (PG_CONFIG_SHAPES in pogon/config.h): build the library with its PG_SHAPES_* bit"
+
 #endif

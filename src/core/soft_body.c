@@ -25,6 +25,9 @@ pg_soft_def pg_default_soft_def(void)
     return d;
 }
 
+/* Soft bodies are bodies held by joints: a build without joints has none. */
+#define NO_JOINTS "soft bodies are made of joints, which this build leaves out (PG_CONFIG_JOINTS=0 in pogon/config.h)"
+
 static pg_result check_def(const pg_world *w, const pg_soft_def *d, const char *who)
 {
     if (d->pg__cookie != PG__DEF_COOKIE)
@@ -105,6 +108,7 @@ pg_result pg_make_soft_blob(pg_world *w, const pg_soft_def *d, pg_vec2 centre, p
     uint32_t i;
     if (first != NULL) first->index = first->generation = 0;
     if (w == NULL || d == NULL) return PG_ERR_NULL;
+    if (!PG_CONFIG_JOINTS) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, NO_JOINTS);
     if ((r = check_def(w, d, who)) != PG_OK) return r;
     if (count < 3 || count > 64) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, "pg_make_soft_blob: count outside 3..64 ring circles");
     if (ring_radius < 2 * d->radius || ring_radius > PG_FIX_C(50))
@@ -143,6 +147,7 @@ pg_result pg_make_rope(pg_world *w, const pg_soft_def *d, pg_vec2 start, pg_vec2
     uint32_t i;
     if (first != NULL) first->index = first->generation = 0;
     if (w == NULL || d == NULL) return PG_ERR_NULL;
+    if (!PG_CONFIG_JOINTS) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, NO_JOINTS);
     if ((r = check_def(w, d, who)) != PG_OK) return r;
     if (count < 2 || count > 1024) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, "pg_make_rope: count outside 2..1024 circles");
     if (!in_envelope(start) || !in_envelope(end)) return pg__fail(w, PG_ERR_ENVELOPE, "pg_make_rope: an end is beyond +-1000 m");
@@ -170,6 +175,7 @@ pg_result pg_make_cloth_strip(pg_world *w, const pg_soft_def *d, pg_vec2 origin,
     pg_fix diagonal;
     if (first != NULL) first->index = first->generation = 0;
     if (w == NULL || d == NULL) return PG_ERR_NULL;
+    if (!PG_CONFIG_JOINTS) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, NO_JOINTS);
     if ((r = check_def(w, d, who)) != PG_OK) return r;
     if (columns < 2 || columns > 64 || rows < 2 || rows > 64) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, "pg_make_cloth_strip: columns and rows must be 2..64");
     if (spacing > PG_FIX_C(50)) return pg__fail_value(w, PG_ERR_ENVELOPE, who, spacing, "m: spacing above 50 m");

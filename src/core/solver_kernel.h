@@ -10,9 +10,15 @@
 
 /* The rows are forced inline where a pass calls them, and each pass into the stage loop
  * that runs it, so every pass is specialised (use_bias, the cached separation) and keeps
- * the two velocities in registers; the rare, large paths stay out of line. */
-#if defined(__GNUC__) || defined(__clang__)
+ * the two velocities in registers; the rare, large paths stay out of line. Built for
+ * size (-Os, __OPTIMIZE_SIZE__), the compiler decides instead: a copy of every row in
+ * every pass is most of the contact solver's flash on a microcontroller (docs/embedded.md).
+ * Inlining changes no result: the arithmetic is the same integer expressions. */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE_SIZE__)
 #define PG__INLINE_ROW static inline __attribute__((always_inline))
+#define PG__NOINLINE static __attribute__((noinline))
+#elif defined(__GNUC__) || defined(__clang__)
+#define PG__INLINE_ROW static inline
 #define PG__NOINLINE static __attribute__((noinline))
 #else
 #define PG__INLINE_ROW static inline

@@ -3,7 +3,7 @@
 #include "trig.h"
 #include "trig_table.inc"
 
-#define PG__TABLE_NAME2(bits) pg_sin_table_##bits
+#define PG__TABLE_NAME2(bits) pg_sin_quarter_##bits
 #define PG__TABLE_NAME(bits) PG__TABLE_NAME2(bits)
 #define PG__SIN_TABLE PG__TABLE_NAME(PG_TRIG_TABLE_BITS)
 
@@ -25,7 +25,7 @@ pg_fix pg_angle_to_radians(pg_angle a)
 
 pg_fix pg_fix_wrap_angle(pg_fix radians) { return pg_angle_to_radians(pg_angle_from_radians(radians)); }
 
-int32_t pg_angle_sin_q30(pg_angle a) { return pg__table_sin_q30(PG__SIN_TABLE, PG_TRIG_TABLE_BITS, a); }
+int32_t pg_angle_sin_q30(pg_angle a) { return pg__quarter_sin_q30(PG__SIN_TABLE, PG_TRIG_TABLE_BITS, a); }
 int32_t pg_angle_cos_q30(pg_angle a) { return pg_angle_sin_q30(a + PG_ANGLE_QUARTER); }
 
 pg_fix pg_fix_sin(pg_fix radians) { return (pg_fix)pg__round_shift64(pg_angle_sin_q30(pg_angle_from_radians(radians)), 14); }

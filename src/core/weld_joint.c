@@ -5,6 +5,7 @@
 #include "error.h"
 #include "joint_def.h"
 #include "joint_pool.h"
+#if PG_CONFIG_JOINTS /* else joints_left_out.c */
 
 pg_weld_joint_def pg_default_weld_joint_def(void)
 {
@@ -145,3 +146,4 @@ void pg__weld_joint_impulse(const joint_constraint *c, int64_t out[3])
     pg__joint_point_impulse(&c->point, c->imp, out);
     out[2] = pg__joint_row_impulse(&c->angular, c->axial_imp);
 }
+#endif

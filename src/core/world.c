@@ -11,6 +11,7 @@
 
 /* ---- definition and memory ------------------------------------------------------------ */
 /* An effect this build was compiled without (pogon/config.h) cannot be turned on. */
+#define LEFT_OUT_JOINTS "max_joints must be 0: this build leaves joints out (PG_CONFIG_JOINTS=0 in pogon/config.h); build the library with PG_CONFIG_JOINTS=1 to use them"
 #define LEFT_OUT_EFFECT "effects has an effect this build leaves out (PG_CONFIG_EFFECTS in pogon/config.h): build the library with it, or clear its PG_EFFECT_* bit"
 
 pg_world_def pg_default_world_def(void)
@@ -31,7 +32,7 @@ pg_world_def pg_default_world_def(void)
     d.max_bodies = 1024;
     d.max_shapes = 2048;
     d.max_contacts = 4096;
-    d.max_joints = 64;
+    d.max_joints = PG_CONFIG_JOINTS ? 64 : 0; /* a build without joints has no joint pool */
     d.pg__cookie = PG__DEF_COOKIE;
     return d;
 }
@@ -50,6 +51,7 @@ static const char *check_def(const pg_world_def *d)
     if (d->max_shapes < 1 || d->max_shapes > PG_MAX_CAPACITY) return "max_shapes must be 1..2^24";
     if (d->max_contacts < 1 || d->max_contacts > PG_MAX_CAPACITY) return "max_contacts must be 1..2^24";
     if (d->max_joints > PG_MAX_CAPACITY) return "max_joints must be 0..2^24";
+    if (!PG_CONFIG_JOINTS && d->max_joints > 0) return LEFT_OUT_JOINTS;
     if (d->contact_hertz <= 0 || d->contact_hertz > PG_FIX_C(1000)) return "contact_hertz must be in (0, 1000]";
     if (d->contact_damping_ratio < 0 || d->contact_damping_ratio > PG_FIX_C(1000)) return "contact_damping_ratio must be 0..1000";
     if (d->contact_push_max <= 0 || d->contact_push_max > PG_FIX_C(1000)) return "contact_push_max must be in (0, 1000] m/s";
@@ -240,7 +242,7 @@ pg_result pg_world_step(pg_world *world)
     if (world == NULL) return PG_ERR_NULL;
     world->begin_count = 0;
     world->end_count = 0;
-    if (world->joint_count > 0) pg__wake_joined_bodies(world);
+    if (PG_CONFIG_JOINTS && world->joint_count > 0) pg__wake_joined_bodies(world);
     /* 1. geometry of moving bodies (static and sleeping ones keep theirs) */
     for (i = 0; i < world->body_high; ++i) {
         pg_body *b = &world->bodies[i];

@@ -26,9 +26,10 @@
 #include "trig.h"
 #include "trig_table.inc"
 
-typedef struct { int bits; const int32_t *table; } table_info;
+typedef struct { int bits; const int32_t *table, *quarter; } table_info;
 static const table_info tables[] = {
-    {8, pg_sin_table_8}, {9, pg_sin_table_9}, {10, pg_sin_table_10}, {11, pg_sin_table_11}, {12, pg_sin_table_12},
+    {8, pg_sin_table_8, pg_sin_quarter_8}, {9, pg_sin_table_9, pg_sin_quarter_9}, {10, pg_sin_table_10, pg_sin_quarter_10},
+    {11, pg_sin_table_11, pg_sin_quarter_11}, {12, pg_sin_table_12, pg_sin_quarter_12},
 };
 #define NTABLES (sizeof tables / sizeof tables[0])
 
@@ -154,6 +155,33 @@ static void test_table_symmetries(void **state)
             PG_EXPECT_EQ(pg__table_sin_q30(tab, bits, PG_ANGLE_QUARTER - a), c, "cos(-a) bits=%d a=%u", bits, a);
             if (s < -PG_ROT_ONE || s > PG_ROT_ONE) fail_msg("|sin| > 1: bits=%d a=%u s=%d", bits, a, s);
         }
+    }
+}
+
+/* The library stores only the first quarter of each table and mirrors it on reading
+ * (pg__quarter_entry). Every entry of the full turn, and the wrap past its end, must be
+ * the full table's: the interpolation (pg__interp_sin_q30) is then fed the same two
+ * entries for every angle, so pg__quarter_sin_q30 equals pg__table_sin_q30 for all 2^32
+ * angles. The sweep checks that on the functions themselves: every angle within 3 of a
+ * table node (the quadrant boundaries among them) and a dense stride in between. */
+static void test_quarter_tables(void **state)
+{
+    (void)state;
+    for (size_t t = 0; t < NTABLES; ++t) {
+        int bits = tables[t].bits;
+        uint32_t n = (uint32_t)1 << bits, k = 32u - (uint32_t)bits;
+        for (uint32_t i = 0; i <= n; ++i)
+            PG_EXPECT_EQ(pg__quarter_entry(tables[t].quarter, bits, i), tables[t].table[i & (n - 1u)], "bits=%d i=%u", bits, i);
+        for (uint32_t i = 0; i < n; ++i) {
+            for (int d = -3; d <= 3; ++d) {
+                pg_angle a = (i << k) + (uint32_t)d;
+                PG_EXPECT_EQ(pg__quarter_sin_q30(tables[t].quarter, bits, a), pg__table_sin_q30(tables[t].table, bits, a),
+                             "bits=%d a=%u", bits, a);
+            }
+        }
+        for (uint64_t a = 0; a < (UINT64_C(1) << 32); a += 65521u)
+            PG_EXPECT_EQ(pg__quarter_sin_q30(tables[t].quarter, bits, (pg_angle)a), pg__table_sin_q30(tables[t].table, bits, (pg_angle)a),
+                         "bits=%d a=%u", bits, (pg_angle)a);
     }
 }
 
@@ -582,6 +610,7 @@ int main(void)
         cmocka_unit_test(test_table_entries),
         cmocka_unit_test(test_table_error_bound),
         cmocka_unit_test(test_table_symmetries),
+        cmocka_unit_test(test_quarter_tables),
         cmocka_unit_test(test_library_tables),
         cmocka_unit_test(test_fix_sin_cos),
         cmocka_unit_test(test_atan2),

@@ -55,16 +55,23 @@ COMMON = ["-mthumb", "-mgeneral-regs-only", "-Os", "-std=c99", "-ffunction-secti
 LINK = ["-Wl,--gc-sections", "-nostartfiles", "--specs=nano.specs"]
 FILE_FORMATS = ("scene_file.c", "replay_file.c", "replay_upgrade.c")
 # The issue's budgets (issue 30), KiB of flash; the core module has none of its own.
-BUDGETS = {"step-only": 16, "step-only-lean": 16, "core-module": None, "core": 32, "everything": 64}
+BUDGETS = {"step-only": 16, "step-only-lean": 16, "step-only-small": 16, "core-module": None, "core": 32, "everything": 64}
 CONFIG_TEXT = {
     "step-only": "step-only circles and boxes",
     "step-only-lean": "step-only circles and boxes, without sleeping and continuous collision (`PG_CONFIG_EFFECTS=0x1F`)",
+    "step-only-small": "step-only circles and boxes, built without joints, other shape kinds, sleeping and continuous "
+                       "collision (`PG_CONFIG_JOINTS=0`, `PG_CONFIG_SHAPES=0x03`, `PG_CONFIG_EFFECTS=0x1F`)",
     "core-module": "`pogon::core`: every public function of the core module",
     "core": "core without file formats (core, state, commands)",
     "everything": "everything",
 }
-CONFIGS = ("step-only", "step-only-lean", "core-module", "core", "everything")
+CONFIGS = ("step-only", "step-only-lean", "step-only-small", "core-module", "core", "everything")
 LEAN = ["-DPG_CONFIG_EFFECTS=0x1Fu"]  # the library of step-only-lean
+SMALL = ["-DPG_CONFIG_JOINTS=0", "-DPG_CONFIG_SHAPES=0x03u", "-DPG_CONFIG_EFFECTS=0x1Fu"]  # of step-only-small
+VARIANTS = (("step-only-lean", LEAN, "-lean"), ("step-only-small", SMALL, "-small"))
+# Each effect left out on its own (pogon.h's PG_EFFECT_* bits; gravity has no code of its own).
+EFFECTS = (("rotation", 0x02), ("friction", 0x04), ("restitution", 0x08), ("damping", 0x10), ("sleeping", 0x20),
+           ("continuous collision", 0x40))
 GROWTH = 1.02
 
 
@@ -192,11 +199,53 @@ def measure_flash(build, jobs):
         for name, (src, keep) in configs.items():
             elf = link_config(out, cpu, lib, src, keep, name)
             result[(name, cpu)] = (flash_of(elf) - base, holders(elf[:-4] + ".map"))
-        lean_out, lean_objects = compile_all(build, cpu, jobs, LEAN, "-lean")
-        lean_lib = archive(lean_out, lean_objects)
-        elf = link_config(lean_out, cpu, lean_lib, os.path.join(HERE, "step_only.c"), [], "step-only-lean")
-        result[("step-only-lean", cpu)] = (flash_of(elf) - base, holders(elf[:-4] + ".map"))
+        for name, flags, suffix in VARIANTS:
+            v_out, v_objects = compile_all(build, cpu, jobs, flags, suffix)
+            v_lib = archive(v_out, v_objects)
+            elf = link_config(v_out, cpu, v_lib, os.path.join(HERE, "step_only.c"), [], name)
+            result[(name, cpu)] = (flash_of(elf) - base, holders(elf[:-4] + ".map"))
     return result
+
+
+def functions_of(mapfile, top=12):
+    """The largest functions and tables of a linked program (from the map): (file, name,
+    bytes), pogon's objects by source file, libgcc's helpers as libgcc."""
+    found = []
+    pattern = re.compile(r"^\s*\.(?:text|rodata|data)\.?(\S*)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+\S*?(libpogon|libgcc)\.a\((\S+)\.o\)")
+    pending = None
+    in_discard = True
+    with open(mapfile) as f:
+        for line in f:
+            if line.startswith("Linker script and memory map"):
+                in_discard = False
+            if in_discard:
+                continue
+            m = pattern.match(pending + " " + line.strip() if pending else line)
+            pending = None
+            if m:
+                if int(m.group(2), 16) != 0 and int(m.group(3), 16) != 0:
+                    lib, obj = m.group(4), m.group(5)
+                    name = m.group(1) or obj
+                    found.append(("libgcc" if lib == "libgcc" else obj + ".c", name, int(m.group(3), 16)))
+            elif re.match(r"^\s*\.(text|rodata|data)\S*\s*$", line):
+                pending = line.rstrip()  # long section names put the numbers on the next line
+    return sorted(found, key=lambda x: -x[2])[:top]
+
+
+def measure_effects(build, jobs):
+    """Cortex-M4 step-only program (step_only.c) of the full library with one effect left
+    out at a time (PG_CONFIG_EFFECTS), and the largest functions of step-only-small."""
+    cpu = "M4"
+    sizes = []
+    out = os.path.join(build, "M4")
+    base = flash_of(os.path.join(out, "baseline.elf"))
+    for name, bit in EFFECTS:
+        e_out, e_objects = compile_all(build, cpu, jobs, ["-DPG_CONFIG_EFFECTS=0x%02Xu" % (0x7F & ~bit)], "-no-%d" % bit)
+        e_lib = archive(e_out, e_objects)
+        elf = link_config(e_out, cpu, e_lib, os.path.join(HERE, "step_only.c"), [], "step-only")
+        sizes.append((name, 0x7F & ~bit, flash_of(elf) - base))
+    small = functions_of(os.path.join(build, "M4-small", "step-only-small.map"), 16)
+    return sizes, small
 
 
 def read_limits():
@@ -384,7 +433,7 @@ def machine():
     return cpu_model
 
 
-def results_of(flash, memory, stack, steps, divisions, command):
+def results_of(flash, effects, memory, stack, steps, divisions, command):
     """Every figure the tables show, as JSON (what --results writes and --render reads),
     with when, where, at what load, with which toolchain and by which command."""
     sizes, parts = memory
@@ -399,6 +448,8 @@ def results_of(flash, memory, stack, steps, divisions, command):
         "command": command,
         "flash": [{"config": n, "cpu": c, "bytes": s, "parts": [list(x) for x in largest_parts]}
                   for (n, c), (s, largest_parts) in sorted(flash.items())],
+        "effects": [{"effect": n, "config": m, "bytes": s} for n, m, s in effects[0]],
+        "small_functions": [list(x) for x in effects[1]],
         "memory": [{"world": list(k), "bytes": v, "parts": parts.get(k, {})} for k, v in sizes.items()],
         "stack": {"step": entry(step), "calls": [entry(d) for d, _ in calls],
                   "largest_frames": [list(x) for x in largest], "over_4k": [list(x) for x in over],
@@ -453,6 +504,17 @@ def markdown(r, path):
                 else "M4 within, M0+ over by %s" % kib(m0 - budget)
         L.append("| %s | %d KiB | %s | %s | %s | %s |" % (CONFIG_TEXT[name], BUDGETS[name], kib(m4), kib(m0), status, parts))
     L.append("")
+    if r.get("effects"):
+        full = flash[("step-only", "M4")][0]
+        L.append("Each effect left out on its own (`PG_CONFIG_EFFECTS`), the step-only program on the Cortex-M4: "
+                 + ", ".join("%s %s (%s%s)" % (e["effect"], kib(e["bytes"]), "-" if e["bytes"] <= full else "+",
+                                                kib(abs(full - e["bytes"]))) for e in r["effects"]) + ".")
+        L.append("")
+    if r.get("small_functions"):
+        L.append("Largest functions and tables of the smallest step-only program (the `PG_CONFIG_JOINTS=0` row above, "
+                 "Cortex-M4, from its link map): "
+                 + ", ".join("%s `%s` %d B" % tuple(x) for x in r["small_functions"]) + ".")
+        L.append("")
     if limits:
         L.append("The cortex_m_size_and_no_float test holds each figure under its limit in tools/size/flash_limits.txt "
                  "(+2 %%): %s." % ", ".join("%s %s %d B" % (n, c, v) for (n, c), v in sorted(limits.items())))
@@ -579,6 +641,9 @@ def main():
             if check.returncode != 0:
                 status = 1
         return status
+    effects = measure_effects(build, args.jobs)
+    for name, mask, size in effects[0]:
+        print("flash step-only M4 without %s (PG_CONFIG_EFFECTS=0x%02X): %d B" % (name, mask, size))
     memory = measure_memory(build)
     for k, v in sorted(memory[0].items()):
         print("memory %s %d" % (k, v))
@@ -590,7 +655,7 @@ def main():
     divisions = measure_divisions(build)
     for cpu, (a, b) in divisions.items():
         print("pyramid step %s: %.1f __aeabi_ldivmod, %.1f __aeabi_uldivmod calls" % (cpu, a, b))
-    results = results_of(flash, memory, stack, steps, divisions,
+    results = results_of(flash, effects, memory, stack, steps, divisions,
                          "tools/size/size_table.py" + (" --results " + args.results if args.results else ""))
     if args.results:
         with open(os.path.join(ROOT, args.results) if not os.path.isabs(args.results) else args.results, "w") as f:
