@@ -4,7 +4,7 @@
 # Usage: scripts/hard-case-figures.sh [BUILD_DIR]     (default: build/release, built)
 #
 # Runs the stability programs of BUILD_DIR/tests (docs/hard-cases.md: the hard cases, both
-# groups, the stacks, bounces, envelope shapes, houses of cards and random piles) with
+# groups, the stacks, bounces, envelope shapes, houses of cards, random piles and the heap) with
 # POGON_HARD_RESULTS set, so that each appends every figure it checks against a bound
 # (tests/stability/hard_results.h), and writes them to docs/results/hard_cases.tsv under
 # three lines saying when, on what machine and by which command. A failing program
@@ -16,7 +16,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 build=${1:-build/release}
 programs=(test_hard_cases test_hard_cases_slow test_stacking test_bounce_energy test_envelope_shapes
-          test_house_of_cards test_random_piles)
+          test_house_of_cards test_random_piles test_heap_sleeps test_heap_sleeps_slow)
 out=docs/results/hard_cases.tsv
 tmp=$(mktemp "${TMPDIR:-/tmp}/pogon-hard.XXXXXX")
 trap 'rm -f "$tmp" "$tmp.tsv"' EXIT

@@ -11,7 +11,7 @@
  * with ties away from zero. Only the first quarter is computed; the rest is mirrored, so
  * sin(pi - x) == sin(x) and sin(-x) == -sin(x) hold exactly in the table. The library
  * keeps only that quarter (pg_sin_quarter_N, N/4 + 1 entries: a quarter of the flash) and
- * mirrors it when it reads (src/trig.h); the full tables (pg_sin_table_N) are compiled
+ * mirrors it when it reads (src/core/trig.h); the full tables (pg_sin_table_N) are compiled
  * only where PG_TRIG_ALL_TABLES is defined, by the tests that prove the two agree entry
  * for entry and by the micro-benchmark.
  * CORDIC table: atan(2^-i) for i = 0..31 as binary angles (2^32 per turn).

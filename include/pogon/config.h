@@ -55,7 +55,7 @@
 
 /** 1 (default): the library has joints (pogon/joint.h). 0: it leaves them out: no joint
  * solver, joint pool or joint code in the step. The functions of pogon/joint.h stay
- * declared and linkable (src/joints_left_out.c), so programs, commands and scene files
+ * declared and linkable (src/core/joints_left_out.c), so programs, commands and scene files
  * build unchanged, and each fails by name: creating a joint gets PG_ERR_INVALID_ARGUMENT
  * with a message naming this switch, a call with a joint handle PG_ERR_STALE_HANDLE. A
  * world definition with max_joints above 0 is refused the same way, and

@@ -165,7 +165,9 @@ typedef struct pg_world_def {
                                    its centre moves no faster than the linear tolerance and
                                    either it turns no faster than the angular one or no
                                    point of it moves faster than the linear one
-                                   (|v| + extent |w|: a small ball rolling slowly rests) */
+                                   (|v| + extent |w|: a small ball rolling slowly rests).
+                                   Either its velocity or its motion in the step (how far
+                                   it moved) may show it: docs/world.md, Sleeping */
     pg_fix time_to_sleep;       /**< seconds at rest before an island sleeps, default 0.5;
                                    counted in steps, to the nearest (30 at 60 Hz) */
     uint32_t max_bodies;        /**< most bodies at once, default 1024 */

@@ -13,7 +13,7 @@
 #define POGON_VERSION_H
 
 #define POGON_VERSION_MAJOR 0 /**< Major version: 0 until the API and the numerics are stable. */
-#define POGON_VERSION_MINOR 2 /**< Minor version: bumped by a change of the numerics or the API. */
+#define POGON_VERSION_MINOR 3 /**< Minor version: bumped by a change of the numerics or the API. */
 #define POGON_VERSION_PATCH 0 /**< Patch version: bumped by a change that keeps every bit and the API. */
 
 /** The version as text, "MAJOR.MINOR.PATCH". */

@@ -64,21 +64,88 @@ static int64_t body_extent(const pg_world *w, const pg_body *b)
     return extent;
 }
 
-/* Whether body b is at rest: its centre moves no faster than the linear tolerance, and
- * either it turns no faster than the angular tolerance or no point of it moves faster
- * than the linear tolerance (|v| + extent |w|, Box2D v3's measure). The second clause
- * lets small round bodies rest: a ball of radius 0.08 m rolling at 6 mm/s turns at
- * 0.075 rad/s, twice the angular tolerance, and with nothing to slow a rolling ball it
- * kept its whole pile awake. It is evaluated only when the first fails (rarely). */
-static int body_at_rest(const pg_world *w, const pg_body *b, int64_t lin_tol2, pg_fix ang_tol)
+/* Whether a body whose centre moves at (vx, vy) and turns at w (Q16.16 m/s and rad/s,
+ * any int64) is slow enough to rest: its centre no faster than the linear tolerance, and
+ * either it turns no faster than the angular tolerance or no point of it moves faster than
+ * the linear tolerance (|v| + extent |w|, Box2D v3's measure). The second clause lets small
+ * round bodies rest: a ball of radius 0.08 m rolling at 6 mm/s turns at 0.075 rad/s, twice
+ * the angular tolerance, and with nothing to slow a rolling ball it kept its whole pile
+ * awake. It is evaluated only when the first fails (rarely). */
+static int slow_enough(const pg_world *w, const pg_body *b, int64_t vx, int64_t vy, int64_t wr, int64_t lin_tol2, pg_fix ang_tol)
 {
-    int64_t v2 = (int64_t)b->v.x * b->v.x + (int64_t)b->v.y * b->v.y, turn, left;
-    if ((b->flags & PG_BODY_FLAG_ALLOW_SLEEP) == 0 || v2 > lin_tol2) return 0;
-    if (b->w <= ang_tol && b->w >= -ang_tol) return 1;
-    /* extent < 2^25 and |w| < 2^31: the product fits */
-    turn = pg__round_shift64(body_extent(w, b) * (b->w < 0 ? -(int64_t)b->w : (int64_t)b->w), 16);
+    int64_t v2, turn, left;
+    if (vx > PG_FIX_MAX || vx < -PG_FIX_MAX || vy > PG_FIX_MAX || vy < -PG_FIX_MAX) return 0; /* far too fast */
+    v2 = vx * vx + vy * vy;
+    if (v2 > lin_tol2) return 0;
+    if (wr <= ang_tol && wr >= -ang_tol) return 1;
+    if (wr > PG_FIX_MAX || wr < -PG_FIX_MAX) return 0;
+    /* extent < 2^25 and |wr| < 2^31: the product fits */
+    turn = pg__round_shift64(body_extent(w, b) * (wr < 0 ? -wr : wr), 16);
     left = (int64_t)w->def.sleep_linear_tolerance - turn;
     return left >= 0 && v2 <= left * left;
+}
+
+/* Whether body i is at rest (REST), moving (MOVING), or moved by the deep push only
+ * (PUSHED), by two measures of its speed: the velocity it ends the step with, and its
+ * motion in the step (how far its centre moved and how far it turned from where it was
+ * when the step began, times the step rate). Either one slow is rest, but for a body the
+ * deep push moves, which only its motion shows.
+ * - Slow motion, fast velocity: under a heavy load (the bottom of a pile 60 m deep) one
+ *   relax pass a substep leaves a few cm/s of velocity that the next step's soft pass takes
+ *   back; the body stays where it is. That velocity kept a settled 4 000-body pile awake.
+ * - Slow velocity, fast motion: the soft pass moves a resting body back and forth within a
+ *   step (its push-out velocity, taken off again by the relax pass), which kept a settled
+ *   1 000-body pile awake when motion alone was tested. But the deep push moves positions
+ *   without velocity (docs/solver-design.md, DEEP PUSH): a body with a push impulse on one
+ *   of its contacts and a slow velocity but fast motion is PUSHED. Its island does not
+ *   sleep in this step, but its rest is not reset either: the push comes and goes at single
+ *   points of a settled pile, and resetting it there kept a 1 000-body pile awake twice as
+ *   long. A push that is still separating bodies keeps them awake
+ *   (test_slow_push_out_is_not_put_to_sleep), and they sleep only after their timer has run
+ *   out since it stopped. */
+enum { MOVING, REST, PUSHED };
+static int body_rest_state(const pg_world *w, uint32_t i, int64_t lin_tol2, pg_fix ang_tol)
+{
+    const pg_body *b = &w->bodies[i];
+    const pg_step_start *s = &w->step_start[i];
+    int64_t hz = (int64_t)w->def.step_hz, moved_x, moved_y, turned;
+    int32_t turn = (int32_t)(b->angle - s->angle); /* binary angle: wraps, defined on uint32 */
+    int slow_velocity;
+    if ((b->flags & PG_BODY_FLAG_ALLOW_SLEEP) == 0) return MOVING;
+    slow_velocity = slow_enough(w, b, b->v.x, b->v.y, b->w, lin_tol2, ang_tol);
+    if (slow_velocity && s->pushed == 0) return REST;
+    /* |d| < 2^32 and step_hz <= 1000: the products fit; |turn| <= 2^31, times step_hz and
+     * 2 pi (below 2^19): below 2^60 */
+    moved_x = ((int64_t)b->center.x - s->center.x) * hz;
+    moved_y = ((int64_t)b->center.y - s->center.y) * hz;
+    turned = pg__round_shift64((int64_t)turn * hz * PG_FIX_TWO_PI, 32);
+    if (slow_enough(w, b, moved_x, moved_y, turned, lin_tol2, ang_tol)) return REST;
+    return slow_velocity ? PUSHED : MOVING;
+}
+
+void pg__note_step_start(pg_world *w)
+{
+    uint32_t i;
+    for (i = 0; i < w->body_high; ++i) {
+        const pg_body *b = &w->bodies[i];
+        if (!pg__body_is_active(b)) continue;
+        w->step_start[i].center = b->center;
+        w->step_start[i].angle = b->angle;
+    }
+}
+
+/* Mark the bodies of the contacts that hold a deep-push impulse after this step's solve. */
+static void mark_pushed_bodies(pg_world *w)
+{
+    uint32_t i;
+    for (i = 0; i < w->body_high; ++i) w->step_start[i].pushed = 0;
+    for (i = 0; i < w->contact_count; ++i) {
+        const pg_contact *c = &w->contacts[i];
+        int32_t n = c->point_count; /* 0, 1 or 2 */
+        if (!((n > 0 && c->points[0].push_impulse != 0) || (n > 1 && c->points[1].push_impulse != 0))) continue;
+        w->step_start[c->body_a].pushed = 1;
+        w->step_start[c->body_b].pushed = 1;
+    }
 }
 
 static int body_still(const pg_body *b) { return b->v.x == 0 && b->v.y == 0 && b->w == 0; }
@@ -91,6 +158,9 @@ void pg__update_sleep(pg_world *w)
     pg_fix ang_tol = w->def.sleep_angular_tolerance;
     pg_fix *min_time = (pg_fix *)(void *)w->solver_scratch; /* solver scratch is free after the solve */
     pg_fix longest = 0; /* the longest rest of an awake body */
+    int state;
+
+    mark_pushed_bodies(w);
 
     /* parent[i] is PG_NULL_INDEX for a body that is not active (nothing here changes which
      * are until the last loop, and only active bodies are ever united), so the loops
@@ -100,9 +170,11 @@ void pg__update_sleep(pg_world *w)
         parent[i] = PG_NULL_INDEX;
         if (!pg__body_is_active(b)) continue;
         parent[i] = i;
-        if (!body_at_rest(w, b, lin_tol2, ang_tol)) {
+        state = body_rest_state(w, i, lin_tol2, ang_tol);
+        w->step_start[i].pushed = state == PUSHED; /* now: its island does not sleep this step */
+        if (state == MOVING) {
             b->sleep_time = 0;
-        } else if (b->sleep_time < PG_FIX_C(1000)) {
+        } else if (state == REST && b->sleep_time < PG_FIX_C(1000)) {
             b->sleep_time += dt;
         }
         if (b->sleep_time > longest) longest = b->sleep_time;
@@ -136,6 +208,7 @@ void pg__update_sleep(pg_world *w)
         r = find_root(parent, i);
         parent[i] = r;
         if (w->bodies[i].sleep_time < min_time[r]) min_time[r] = w->bodies[i].sleep_time;
+        if (w->step_start[i].pushed) min_time[r] = 0; /* moved by the deep push in this step */
     }
     for (i = 0; i < w->joint_high; ++i) {
         const pg_joint *j = &w->joints[i];
@@ -143,15 +216,6 @@ void pg__update_sleep(pg_world *w)
         if ((j->flags & PG_JOINT_FLAG_USED) == 0 || a == PG_NULL_INDEX) continue;
         if (w->bodies[a].type == PG_BODY_KINEMATIC && parent[b] != PG_NULL_INDEX && !body_still(&w->bodies[a])) min_time[parent[b]] = 0;
         if (w->bodies[b].type == PG_BODY_KINEMATIC && parent[a] != PG_NULL_INDEX && !body_still(&w->bodies[b])) min_time[parent[a]] = 0;
-    }
-    /* An island still pushing out a deep overlap does not sleep: that push moves positions
-     * only (docs/solver-design.md, DEEP PUSH), so its bodies look at rest while they are not. */
-    for (i = 0; i < n_contacts; ++i) {
-        const pg_contact *c = &w->contacts[i];
-        int32_t n = c->point_count; /* 0, 1 or 2 */
-        if (!((n > 0 && c->points[0].push_impulse != 0) || (n > 1 && c->points[1].push_impulse != 0))) continue;
-        if (parent[c->body_a] != PG_NULL_INDEX) min_time[parent[c->body_a]] = 0;
-        if (parent[c->body_b] != PG_NULL_INDEX) min_time[parent[c->body_b]] = 0;
     }
     rest = rest_threshold(w, dt);
     for (i = 0; i < w->body_high; ++i) {

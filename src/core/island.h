@@ -3,6 +3,9 @@
 #define POGON_SRC_ISLAND_H
 #include "world_types.h"
 
+/* Before the solve: where each active body starts the step, from which the sleep test
+ * measures how far it moves. */
+void pg__note_step_start(pg_world *world);
 /* After the solve: bodies at rest long enough fall asleep, island by island. */
 void pg__update_sleep(pg_world *world);
 /* Before a step: wake a dynamic body joined to an awake one (a joint made while one

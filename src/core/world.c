@@ -64,7 +64,7 @@ static const char *check_def(const pg_world_def *d)
 }
 
 typedef struct layout {
-    size_t world, bodies, shapes, joints, contacts, geoms, boxes, flags, pboxes, pflags, pshape, pairs, scratch, island, begin, end,
+    size_t world, bodies, shapes, joints, contacts, geoms, boxes, flags, pboxes, pflags, pshape, pairs, scratch, island, start, begin, end,
         total;
 } layout;
 
@@ -98,6 +98,7 @@ static layout compute_layout(const pg_world_def *d)
     PLACE(scratch, max2(max2(pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity), sizeof(pg_contact) * d->max_contacts),
                         max2(pg__solver_scratch_bytes(d), pg__body_mass_scratch_bytes())));
     PLACE(island, sizeof(uint32_t) * d->max_bodies);
+    PLACE(start, sizeof(pg_step_start) * d->max_bodies);
     PLACE(begin, sizeof(pg_contact_event) * d->max_contacts);
     PLACE(end, sizeof(pg_contact_event) * d->max_contacts);
 #undef PLACE
@@ -122,7 +123,7 @@ const char *pg__world_memory_part(const pg_world_def *def, unsigned i, size_t *b
                                         "world geometries", "boxes", "proxy flags", "proxy boxes",
                                         "proxy flags (compact)", "proxy shapes", "pairs",
                                         "scratch (broadphase / next contacts / solver / mass)", "island parents",
-                                        "begin events", "end events"};
+                                        "step starts", "begin events", "end events"};
     layout l;
     size_t at[sizeof names / sizeof names[0] + 1];
     *bytes = 0;
@@ -130,7 +131,8 @@ const char *pg__world_memory_part(const pg_world_def *def, unsigned i, size_t *b
     l = compute_layout(def);
     at[0] = l.world; at[1] = l.bodies; at[2] = l.shapes; at[3] = l.joints; at[4] = l.contacts;
     at[5] = l.geoms; at[6] = l.boxes; at[7] = l.flags; at[8] = l.pboxes; at[9] = l.pflags; at[10] = l.pshape;
-    at[11] = l.pairs; at[12] = l.scratch; at[13] = l.island; at[14] = l.begin; at[15] = l.end; at[16] = l.total;
+    at[11] = l.pairs; at[12] = l.scratch; at[13] = l.island; at[14] = l.start; at[15] = l.begin; at[16] = l.end;
+    at[17] = l.total;
     *bytes = at[i + 1] - at[i];
     return names[i];
 }
@@ -169,6 +171,7 @@ pg_result pg_world_create(const pg_world_def *def, void *memory, size_t memory_s
     w->solver_scratch = m + l.scratch; /* the same area: see compute_layout */
     w->solver_scratch_bytes = l.island - l.scratch;
     w->island_parent = (uint32_t *)(void *)(m + l.island);
+    w->step_start = (pg_step_start *)(void *)(m + l.start);
     w->begin_events = (pg_contact_event *)(void *)(m + l.begin);
     w->end_events = (pg_contact_event *)(void *)(m + l.end);
     *out = w;
@@ -271,6 +274,7 @@ pg_result pg_world_step(pg_world *world)
     /* 2. broadphase + narrowphase + contact bookkeeping */
     r = pg__update_contacts(world);
     if (r != PG_OK) return r;
+    if ((world->def.effects & PG__EFFECT(PG_EFFECT_SLEEPING)) != 0) pg__note_step_start(world);
     /* 3. forces, solver, integration */
     pg__solve(world);
     /* 4. islands and sleep */

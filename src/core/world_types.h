@@ -24,6 +24,14 @@
  * refuses it), so in a build that keeps the effect nothing changes. */
 #define PG__EFFECT(bit) ((uint32_t)(bit) & (uint32_t)(PG_CONFIG_EFFECTS))
 
+/* A body's centre of mass and angle at the start of a step, and whether after the solve
+ * one of its contacts holds a deep-push impulse (island.c). */
+typedef struct pg_step_start {
+    pg_vec2 center;
+    pg_angle angle;
+    uint32_t pushed;
+} pg_step_start;
+
 struct pg_world {
     pg_world_def def;
     uint64_t frame;
@@ -55,6 +63,8 @@ struct pg_world {
     void *solver_scratch;
     size_t solver_scratch_bytes;
     uint32_t *island_parent;   /* per body slot */
+    pg_step_start *step_start; /* per body slot: where an active body was when the step began
+                                  (island.c: rest is measured by how far a body moved) */
 
     pg_contact_event *begin_events, *end_events;
     uint32_t begin_count, end_count;

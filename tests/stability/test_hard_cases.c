@@ -1076,11 +1076,11 @@ static void test_overlapping_column_is_not_thrown(void **state)
 /* =====================================================================================
  * Slow push-out: two 1 m boxes created side by side on the ground overlapping by half,
  * contact_push_max 0.2 m/s, sleeping on. The push-out beyond a contact's hold moves
- * positions only (DEEP PUSH), so the boxes look at rest to the sleep test (their speeds
- * stay below 0.05 m/s) while the push still separates them; an island whose contacts hold
- * a push impulse must stay awake (src/core/island.c). Asserted: after 5 s the centres are 1 m
- * apart to within OVERLAP_TOL (separated, not asleep half way: without that rule they
- * fall asleep at 1 s, 0.599 m apart), and both boxes are asleep by 10 s.
+ * positions only (DEEP PUSH), so the boxes' speeds stay below 0.05 m/s while the push
+ * still separates them; the sleep test must count that motion (src/core/island.c also measures
+ * how far a body moved in the step). Asserted: after 5 s the centres are 1 m apart to within
+ * OVERLAP_TOL (separated, not asleep half way: a sleep test that reads the velocities
+ * alone puts them to sleep at 1 s, 0.599 m apart), and both boxes are asleep by 10 s.
  * ===================================================================================== */
 static void test_slow_push_out_is_not_put_to_sleep(void **state)
 {

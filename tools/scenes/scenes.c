@@ -1,4 +1,4 @@
-/* scenes.c — pyramid, stack and rain. Geometry matches the peers' harnesses: 1 m boxes,
+/* scenes.c — pyramid, stack, rain and heap. Geometry matches the peers' harnesses: 1 m boxes,
  * density 1, friction 0.6, a static ground whose top is at y = 0. */
 #include "scenes.h"
 #include <string.h>
@@ -6,6 +6,7 @@
 static uint32_t default_count(const char *name)
 {
     if (strcmp(name, "rain") == 0) return 1000;
+    if (strcmp(name, "heap") == 0) return 4000;
     return 20;
 }
 
@@ -13,6 +14,7 @@ static uint32_t bodies_for(const char *name, uint32_t count)
 {
     if (strcmp(name, "pyramid") == 0) return count * (count + 1u) / 2u + 1u;
     if (strcmp(name, "rain") == 0) return count + 11u;
+    if (strcmp(name, "heap") == 0) return count + 5u;
     return count + 1u;
 }
 
@@ -108,6 +110,30 @@ pg_result pg_scene_build(const char *name, uint32_t count, const pg_world_def *d
             pg_fix jitter = (pg_fix)((int32_t)(next_random(&seed) % 8193u) - 4096); /* +-1/16 m */
             bd.position = pg_v2(PG_FIX_C((int32_t)column) - PG_FIX_C(19) + jitter, PG_FIX_C(2) + PG_FIX_C((int32_t)layer));
             r = pg_make_ball(out->world, &bd, &sd, radius, &id);
+            if (r != PG_OK) return r;
+            out->top = id;
+            out->body_count += 1u;
+        }
+    } else if (strcmp(name, "heap") == 0) {
+        uint32_t seed = 2929u;
+        /* a box 30 m wide inside, walls 0.5 m thick and 200 m tall, in 100 m pieces */
+        bd.position = pg_v2(0, PG_FIX_C(-1));
+        r = pg_make_wall(out->world, &bd, &sd, PG_FIX_C(32), PG_FIX_C(2), &id);
+        for (i = 0; r == PG_OK && i < 4u; ++i) {
+            bd.position = pg_v2((i & 1u) ? PG_FIX_C(15) + PG_FIX_C(1) / 4 : PG_FIX_C(-15) - PG_FIX_C(1) / 4, PG_FIX_C(50 + 100 * (int32_t)(i / 2u)));
+            r = pg_make_wall(out->world, &bd, &sd, PG_FIX_HALF, PG_FIX_C(100), &id);
+        }
+        if (r != PG_OK) return r;
+        bd.type = PG_BODY_DYNAMIC;
+        for (i = 0; i < count; ++i) {
+            /* every third body a box: circles of radius and boxes of half side 0.25 .. 0.5 m,
+             * on 28 columns and rows 1.05 m apart (at most 1 m wide each: they start apart) */
+            pg_fix size = (pg_fix)(16384 + (int32_t)(next_random(&seed) % 16385u));
+            uint32_t column = i % 28u, layer = i / 28u;
+            pg_fix jitter = (pg_fix)((int32_t)(next_random(&seed) % 1025u) - 512); /* +-1/128 m */
+            const pg_fix spacing = (pg_fix)68813;                                   /* 1.05 m */
+            bd.position = pg_v2((pg_fix)((int32_t)column * spacing - 27 * spacing / 2 + jitter), PG_FIX_C(1) + (pg_fix)((int32_t)layer * spacing));
+            r = next_random(&seed) % 3u == 0u ? pg_make_box(out->world, &bd, &sd, 2 * size, 2 * size, &id) : pg_make_ball(out->world, &bd, &sd, size, &id);
             if (r != PG_OK) return r;
             out->top = id;
             out->body_count += 1u;

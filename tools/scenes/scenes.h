@@ -14,8 +14,9 @@ typedef struct pg_scene {
 /* Capacities a scene of `count` bodies needs. */
 pg_world_def pg_scene_world_def(const char *name, uint32_t count);
 
-/* Build scene `name` ("pyramid", "stack", "rain") with `count` (rows for pyramid,
- * boxes for stack, circles for rain; 0 = the default: 20, 20, 1000) into a world created
+/* Build scene `name` ("pyramid", "stack", "rain", "heap") with `count` (rows for pyramid,
+ * boxes for stack, circles for rain, circles and boxes for heap; 0 = the default: 20, 20,
+ * 1000, 4000) into a world created
  * in `memory`. `def` may be NULL for the scene's defaults; its capacities are raised to
  * what the scene needs. Returns PG_OK or the first error. */
 pg_result pg_scene_build(const char *name, uint32_t count, const pg_world_def *def, void *memory, size_t memory_size, pg_scene *out);
