@@ -17,6 +17,7 @@
 #include <cmocka.h>
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "pogon/config.h"
@@ -149,6 +150,30 @@ static inline pg_fix pgt_sat(pgt_i128 v, int *overflow)
     if (v < (pgt_i128)PG_FIX_MIN) { if (overflow) *overflow = 1; return PG_FIX_MIN; }
     if (overflow) *overflow = 0;
     return (pg_fix)v;
+}
+
+/* A file read whole into memory that the caller frees: exactly its bytes, no NUL after
+ * them (the scene reader must take a buffer that is not a C string). Fails the test when
+ * the file cannot be read. */
+static inline char *pgt_read_file(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    char *text;
+    long n;
+    if (f == NULL) {
+        print_error("cannot open %s\n", path);
+        fail();
+    }
+    assert_int_equal(fseek(f, 0, SEEK_END), 0);
+    n = ftell(f);
+    assert_true(n > 0);
+    assert_int_equal(fseek(f, 0, SEEK_SET), 0);
+    text = malloc((size_t)n);
+    assert_non_null(text);
+    assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
+    fclose(f);
+    *size = (size_t)n;
+    return text;
 }
 
 #endif

@@ -28,25 +28,8 @@ typedef struct loaded {
 static char *read_file(const char *name, size_t *size)
 {
     char path[512];
-    FILE *f;
-    char *text;
-    long n;
     snprintf(path, sizeof path, "%s/%s", POGON_SCENES_DIR, name);
-    f = fopen(path, "rb");
-    if (f == NULL) {
-        print_error("cannot open %s\n", path);
-        fail();
-    }
-    assert_int_equal(fseek(f, 0, SEEK_END), 0);
-    n = ftell(f);
-    assert_true(n > 0);
-    assert_int_equal(fseek(f, 0, SEEK_SET), 0);
-    text = malloc((size_t)n); /* exactly the file: no NUL after it */
-    assert_non_null(text);
-    assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
-    fclose(f);
-    *size = (size_t)n;
-    return text;
+    return pgt_read_file(path, size);
 }
 
 static loaded world_for_def(const pg_world_def *def)
