@@ -57,7 +57,11 @@ cfg=$(find "$prefix" -name pogonConfig.cmake | head -n 1)
 echo "installed: ${pc#"$prefix"/} ${cfg#"$prefix"/}"
 
 step "[1/3] find_package(pogon)"
+# Ask for the major.minor being tested, as a project built against this version would.
+required=""
+[ -z "${POGON_VERSION:-}" ] || required=$(echo "$POGON_VERSION" | cut -d. -f1,2)
 "$cmake" -S "$consumer" -B "$tmp/fp" "$@" -DCMAKE_PREFIX_PATH="$prefix" \
+  -DPOGON_REQUIRED_VERSION="$required" \
   -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_FIND_USE_SYSTEM_PACKAGE_REGISTRY=OFF
 found=$(sed -n 's/^pogon_DIR:PATH=//p' "$tmp/fp/CMakeCache.txt")
 case $found in
