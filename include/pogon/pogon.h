@@ -308,7 +308,10 @@ pg_result pg_body_set_transform(pg_world *world, pg_body_id body, pg_vec2 positi
 pg_result pg_body_set_linear_velocity(pg_world *world, pg_body_id body, pg_vec2 v);
 /** Set the angular velocity (rad/s); static bodies refuse. */
 pg_result pg_body_set_angular_velocity(pg_world *world, pg_body_id body, pg_fix w);
-/** Change the body's type (to dynamic only when its shapes are within the envelope). */
+/** Change the body's type (to dynamic only when its shapes are within the envelope).
+ *  Refused (PG_ERR_BODY_TYPE) when a joint of the body would break the rules it was made
+ *  under: both its bodies static, a mouse joint's body not dynamic, an anchor beyond a
+ *  moving body's 50 m. */
 pg_result pg_body_set_type(pg_world *world, pg_body_id body, pg_body_type type);
 /** Nonzero wakes the body's island; 0 puts a dynamic body to sleep (its velocities
  * become 0) when sleeping is on. Static bodies ignore it. */

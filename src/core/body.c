@@ -430,6 +430,10 @@ pg_result pg_body_set_type(pg_world *world, pg_body_id id, pg_body_type type)
     if (type != PG_BODY_STATIC && type != PG_BODY_KINEMATIC && type != PG_BODY_DYNAMIC)
         return pg__fail(world, PG_ERR_INVALID_ARGUMENT, "type must be PG_BODY_STATIC, PG_BODY_KINEMATIC or PG_BODY_DYNAMIC");
     if (b->type == type) return PG_OK;
+    {
+        const char *joint_problem = pg__joint_type_change_problem(world, id.index, type);
+        if (joint_problem != NULL) return pg__fail(world, PG_ERR_BODY_TYPE, joint_problem);
+    }
     if (type != PG_BODY_STATIC) { /* a static body's shapes may reach farther than a moving body's */
         uint32_t s;
         for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next)

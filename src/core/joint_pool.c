@@ -3,6 +3,7 @@
  * answer "which joints has this body", never decide an order. */
 #include "island.h"
 #include "joint_pool.h"
+#include "reach.h"
 
 pg_joint *pg__joint(const pg_world *world, pg_joint_id id)
 {
@@ -107,6 +108,26 @@ int pg__joint_blocks_collision(const pg_world *world, uint32_t a, uint32_t b)
         if ((jt->body_a == b || jt->body_b == b) && (jt->flags & PG_JOINT_FLAG_COLLIDE) == 0) return 1;
     }
     return 0;
+}
+
+const char *pg__joint_type_change_problem(const pg_world *world, uint32_t b, pg_body_type type)
+{
+    uint32_t j;
+    for (j = world->bodies[b].first_joint; j != PG_NULL_INDEX; j = pg__joint_next_of_body(world, j, b)) {
+        const pg_joint *jt = &world->joints[j];
+        uint32_t other = jt->body_a == b ? jt->body_b : jt->body_a;
+        pg_vec2 anchor = jt->body_a == b ? jt->anchor_a : jt->anchor_b;
+        pg_fix ax = pg_fix_abs(anchor.x), ay = pg_fix_abs(anchor.y);
+        if ((ax > ay ? ax : ay) > pg__body_reach_limit(type))
+            return "a joint's anchor on this body is beyond 50 m of its origin, farther than a moving body's anchor may be: destroy the joint first";
+        if (jt->type == PG_JOINT_MOUSE) {
+            if (type != PG_BODY_DYNAMIC)
+                return "a mouse joint pulls this body, and it pulls only a dynamic body: destroy the mouse joint first";
+        } else if (type == PG_BODY_STATIC && other != PG_NULL_INDEX && world->bodies[other].type == PG_BODY_STATIC) {
+            return "a joint joins this body to a static body, and a joint needs a body that can move: destroy the joint first";
+        }
+    }
+    return NULL;
 }
 
 void pg__joint_rebuild_lists(pg_world *world)

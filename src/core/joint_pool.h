@@ -20,6 +20,10 @@ void pg__joints_remove_of_body(pg_world *world, uint32_t b);
 uint32_t pg__joint_next_of_body(const pg_world *world, uint32_t j, uint32_t b);
 /* Nonzero when a joint without collide_connected joins body slots a and b. */
 int pg__joint_blocks_collision(const pg_world *world, uint32_t a, uint32_t b);
+/* Why body slot b may not become `type` (NULL when it may): the joints' creation rules
+ * (one body that can move; a mouse joint's body dynamic) hold for as long as they live,
+ * so that every world can be written as a scene and read back. */
+const char *pg__joint_type_change_problem(const pg_world *world, uint32_t b, pg_body_type type);
 /* Rebuild every body's joint list from the pool (after a restore). */
 void pg__joint_rebuild_lists(pg_world *world);
 /* Wake the joint's bodies (those that are not static). */

@@ -878,12 +878,18 @@ static void decode_joints(source *r, pg_world *w, const pg_world_def *caps, size
             j.body_a = take_u32(r, "joint.body_a");
             j.body_b = take_u32(r, "joint.body_b");
             if (r->error_field == NULL && r->body_info != NULL) {
-                /* used bodies, two different ones (a mouse joint has no body A). Both may be
-                 * static: pg_body_set_type can make them so after the joint was made, and
-                 * such a joint acts on nothing */
+                /* used bodies, two different ones (a mouse joint has no body A), the rules
+                 * pg_body_set_type keeps for a joint's life: not both static, a mouse
+                 * joint's body dynamic */
+                const uint32_t static_code = 1u + (uint32_t)PG_BODY_STATIC;
                 int a_ok = mouse ? j.body_a == PG_NULL_INDEX : j.body_a < r->n_bodies && r->body_info[(size_t)5u * j.body_a] != 0;
                 int b_ok = j.body_b < r->n_bodies && r->body_info[(size_t)5u * j.body_b] != 0;
-                if (!a_ok || !b_ok || j.body_a == j.body_b) invalid(r, at, "joint.bodies (not two used bodies)");
+                if (!a_ok || !b_ok || j.body_a == j.body_b) {
+                    invalid(r, at, "joint.bodies (not two used bodies)");
+                } else if (mouse ? r->body_info[(size_t)5u * j.body_b] != 1u + (uint32_t)PG_BODY_DYNAMIC
+                                 : r->body_info[(size_t)5u * j.body_a] == static_code && r->body_info[(size_t)5u * j.body_b] == static_code) {
+                    invalid(r, at, mouse ? "joint.body_b (a mouse joint's body is not dynamic)" : "joint.bodies (both static)");
+                }
             }
             j.anchor_a = take_vec(r, "joint.anchor_a");
             j.anchor_b = take_vec(r, "joint.anchor_b");

@@ -349,6 +349,53 @@ static void test_rod_reaction_is_the_tension(void **state)
     free_world(&t);
 }
 
+/* A body's type change that would break a rule its joints were made under is refused
+ * with nothing changed, so every world stays one its scene and state readers accept. */
+static void test_type_change_keeps_the_joint_rules(void **state)
+{
+    test_world t = joint_world(8, 4);
+    pg_body_id ground = static_anchor(t.w, 0.0, 0.0), a = ball_at(t.w, 0.0, 2.0, 0.25, 1.0);
+    pg_body_id b = ball_at(t.w, 3.0, 2.0, 0.25, 1.0), far = ball_at(t.w, 60.0, 2.0, 0.25, 1.0);
+    pg_body_def sbd = pg_default_body_def();
+    pg_shape_def sd = pg_default_shape_def();
+    pg_revolute_joint_def rd = pg_default_revolute_joint_def();
+    pg_mouse_joint_def md = pg_default_mouse_joint_def();
+    pg_distance_joint_def dd = pg_default_distance_joint_def();
+    pg_body_id slab;
+    pg_joint_id pin, drag, reach;
+    (void)state;
+    sbd.position = pg_v2(fx(0.0), fx(-1.0));
+    assert_int_equal(pg_make_box(t.w, &sbd, &sd, fx(1.0), fx(0.5), &slab), PG_OK);
+    rd.body_a = ground;
+    rd.body_b = a;
+    rd.local_anchor_b = pg_v2(0, fx(-2.0));
+    assert_int_equal(pg_revolute_joint_create(t.w, &rd, &pin), PG_OK);
+    md.body = b;
+    md.target = pg_v2(fx(3.0), fx(2.0));
+    assert_int_equal(pg_mouse_joint_create(t.w, &md, &drag), PG_OK);
+    dd.body_a = slab;
+    dd.body_b = far;
+    dd.local_anchor_a = pg_v2(fx(60.0), fx(3.0)); /* 60 m from the slab's origin: a static body's reach */
+    dd.length = fx(1.0);
+    assert_int_equal(pg_distance_joint_create(t.w, &dd, &reach), PG_OK);
+
+    EXPECT_REFUSED(t.w, pg_body_set_type(t.w, a, PG_BODY_STATIC), PG_ERR_BODY_TYPE);    /* pinned to a static body */
+    EXPECT_REFUSED(t.w, pg_body_set_type(t.w, b, PG_BODY_KINEMATIC), PG_ERR_BODY_TYPE); /* a mouse joint's body */
+    EXPECT_REFUSED(t.w, pg_body_set_type(t.w, b, PG_BODY_STATIC), PG_ERR_BODY_TYPE);
+    EXPECT_REFUSED(t.w, pg_body_set_type(t.w, slab, PG_BODY_DYNAMIC), PG_ERR_BODY_TYPE); /* its anchor beyond 50 m */
+    assert_int_equal(pg_body_type_of(t.w, a), PG_BODY_DYNAMIC);
+    assert_int_equal(pg_body_type_of(t.w, slab), PG_BODY_STATIC);
+
+    assert_int_equal(pg_body_set_type(t.w, a, PG_BODY_KINEMATIC), PG_OK); /* a kinematic body may be pinned */
+    assert_int_equal(pg_joint_destroy(t.w, pin), PG_OK);
+    assert_int_equal(pg_body_set_type(t.w, a, PG_BODY_STATIC), PG_OK);
+    assert_int_equal(pg_joint_destroy(t.w, drag), PG_OK);
+    assert_int_equal(pg_body_set_type(t.w, b, PG_BODY_STATIC), PG_OK);
+    assert_int_equal(pg_joint_destroy(t.w, reach), PG_OK);
+    assert_int_equal(pg_body_set_type(t.w, slab, PG_BODY_DYNAMIC), PG_OK);
+    free_world(&t);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -359,6 +406,7 @@ int main(void)
         cmocka_unit_test(test_hash_and_snapshot),
         cmocka_unit_test(test_mouse_joint_drags_and_reaction_holds_the_weight),
         cmocka_unit_test(test_rod_reaction_is_the_tension),
+        cmocka_unit_test(test_type_change_keeps_the_joint_rules),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
