@@ -56,7 +56,7 @@ if(POGON_CORTEX_M_TESTS AND _pogon_python3)
     COMMAND ${_pogon_python3} "${PROJECT_SOURCE_DIR}/tools/size/size_table.py" --check
             --build "${PROJECT_BINARY_DIR}/cortex-m-size")
   set_tests_properties(cortex_m_size_and_no_float PROPERTIES
-    LABELS "build;cortex-m" TIMEOUT 600 SKIP_RETURN_CODE 77)
+    LABELS "build;cortex-m" TIMEOUT 600 SKIP_RETURN_CODE 77 COST 100) # long: started first
 endif()
 
 # static_clang_tidy, static_cppcheck: clang-tidy (.clang-tidy's checks) and cppcheck find
@@ -69,6 +69,8 @@ if(POGON_STATIC_ANALYSIS)
     string(REPLACE "-" "_" _pogon_name "static_${_pogon_tool}")
     add_test(NAME ${_pogon_name}
       COMMAND sh "${PROJECT_SOURCE_DIR}/scripts/static-analysis.sh" ${_pogon_tool} "${PROJECT_BINARY_DIR}")
-    set_tests_properties(${_pogon_name} PROPERTIES LABELS "static" TIMEOUT 1200 SKIP_RETURN_CODE 77)
+    # COST: clang-tidy is the clang preset's longest test; started first, it runs beside
+    # the others instead of alone at the end (a fresh build has no timing history)
+    set_tests_properties(${_pogon_name} PROPERTIES LABELS "static" TIMEOUT 1200 SKIP_RETURN_CODE 77 COST 1000)
   endforeach()
 endif()
