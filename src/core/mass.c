@@ -401,20 +401,19 @@ PG__OUT_OF_LINE static void pg__circle_moments(pg__pt c, int64_t r, pg__moments 
 /* What a capsule's length adds to the second moment of the circle at its midpoint
  * (times 24 2^61). Of 24 I_centre = 4 r L^3 + 48 r^3 L + pi r^2 (12 r^2 + 6 L^2) and
  * 24 area |centre|^2 = (12 r L + 6 pi r^2) |s|^2 (s = p + q = 2 centre), the terms with
- * L: 4 r L^3 + 48 r^3 L + 6 pi r^2 L^2 + 12 r L |s|^2. Apart from pg__capsule_moments, so
+ * L: r L (4 L^2 + 48 r^2 + 12 |s|^2) + 6 pi r^2 L^2. Apart from pg__capsule_moments, so
  * that its temporaries and the square root's are not on the stack at once. */
 PG__OUT_OF_LINE static pg__big pg__capsule_second_of_length(const pg__big *rl, const pg__big *l2, int64_t r, int64_t sx,
                                                            int64_t sy)
 {
     /* one product per statement (exact sums, any order): few temporaries live at once */
-    pg__big t = pg__big_mul(*rl, *l2), u;
-    t = pg__big_mul_i64(t, 4);
-    u = pg__big_mul(*rl, pg__big_mul2(r, r));
-    t = pg__big_add(t, pg__big_mul_i64(u, 48));
-    u = pg__big_mul_i64(pg__big_mul2(r, r), PG__PI_Q61);
-    t = pg__big_add(t, pg__big_mul(u, pg__big_mul_i64(*l2, 6)));
-    u = pg__big_mul(pg__big_add(pg__big_mul2(sx, sx), pg__big_mul2(sy, sy)), pg__big_mul_i64(*rl, 12));
-    return pg__big_add(t, u);
+    pg__big r2 = pg__big_mul2(r, r), t = pg__big_mul_i64(*l2, 4), u;
+    t = pg__big_add(t, pg__big_mul_i64(r2, 48));
+    u = pg__big_add(pg__big_mul2(sx, sx), pg__big_mul2(sy, sy));
+    t = pg__big_add(t, pg__big_mul_i64(u, 12));
+    t = pg__big_mul(*rl, t);
+    u = pg__big_mul(pg__big_mul_i64(r2, PG__PI_Q61), *l2);
+    return pg__big_add(t, pg__big_mul_i64(u, 6));
 }
 
 /* L 2^61 = round(sqrt(L^2 2^122)) for the capsule's L^2. */
@@ -426,18 +425,19 @@ PG__OUT_OF_LINE static void pg__capsule_moments(pg__pt p, pg__pt q, int64_t r, p
 {
     int64_t dx = q.x - p.x, dy = q.y - p.y, sx = p.x + q.x, sy = p.y + q.y;
     pg__pt mid;
+    pg__moments length;
     pg__big l2 = pg__big_add(pg__big_mul2(dx, dx), pg__big_mul2(dy, dy)); /* L^2 */
-    pg__big lq = pg__length_q61(&l2);                                    /* L 2^61 */
-    pg__big rl = pg__big_mul_i64(lq, r);                                  /* r L 2^61 */
-    pg__big rl24 = pg__big_mul_i64(rl, 24);                               /* 12 area of the rectangle */
+    pg__big rl = pg__big_mul_i64(pg__length_q61(&l2), r);                 /* r L 2^61 */
     /* exact: coordinates relative to O are multiples of 2^16 u, so sx and sy are even */
     mid.x = sx / 2;
     mid.y = sy / 2;
     pg__circle_moments(mid, r, out);
-    out->m0 = pg__big_add(out->m0, pg__big_shl(rl24, 1));
-    out->m1x = pg__big_add(out->m1x, pg__big_mul_i64(rl24, sx));
-    out->m1y = pg__big_add(out->m1y, pg__big_mul_i64(rl24, sy));
-    out->m2 = pg__big_add(out->m2, pg__capsule_second_of_length(&rl, &l2, r, sx, sy));
+    /* the rectangle's 24 area = 48 r L, its first moment 24 area s / 2 */
+    length.m0 = pg__big_mul_i64(rl, 48);
+    length.m1x = pg__big_mul_i64(rl, 24 * sx);
+    length.m1y = pg__big_mul_i64(rl, 24 * sy);
+    length.m2 = pg__capsule_second_of_length(&rl, &l2, r, sx, sy);
+    pg__moments_add(out, &length, 1);
 }
 
 /* ---- convex clipping ---------------------------------------------------------------- */
