@@ -73,10 +73,10 @@
  * it would enter a world (pg_shape_create, the pg_make_* calls, snapshots and scene
  * files: PG_ERR_INVALID_ARGUMENT, with a message naming this switch); its pg_geometry_*
  * function returns PG_ERR_INVALID_ARGUMENT (it has no world to hold a message). What
- * only that kind needs (its validation, chain collision, ear clipping) then has no code
- * in the library. The kinds kept step exactly as in the full build. For example 0x03
- * keeps circles and boxes; the box collider is the polygon collider (boxes take its fast
- * path), and circles' mass is the capsule formula of length 0, so both stay.
+ * only that kind needs (its validation, chain collision, ear clipping, a capsule's mass
+ * terms) then has no code in the library. The kinds kept step exactly as in the full
+ * build. For example 0x03 keeps circles and boxes; the box collider is the polygon
+ * collider (boxes take its fast path), so it stays.
  * @{ */
 #define PG_SHAPES_CIRCLE 0x01u  /**< circles: pg_geometry_circle, pg_make_ball */
 #define PG_SHAPES_BOX 0x02u     /**< four-vertex polygons: pg_geometry_box, pg_make_box, pg_make_wall */

@@ -318,7 +318,7 @@ void pg__body_sync_geometry(pg_world *world, uint32_t body_index)
     }
     /* fast-turning (continuous.c): each shape may face any way during the step, and its
      * time of impact is looked for only against the pairs found here */
-    turning = b->w != 0 && b->turn_reach != 0 && pg__turns_fast_now(world, b);
+    turning = PG__EFFECT(PG_EFFECT_CONTINUOUS) != 0 && b->w != 0 && b->turn_reach != 0 && pg__turns_fast_now(world, b);
     for (s = b->first_shape; s != PG_NULL_INDEX; s = world->shapes[s].next) {
         pg_aabb box;
         pg__geom_place_slot(&world->shapes[s].local, b->origin, b->rot, &world->world_geoms[s]);

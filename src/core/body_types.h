@@ -42,7 +42,7 @@ typedef struct pg_body {
     /* derived from the shapes and local_center (pg__body_set_turn_extents), for continuous
      * collision of turning bodies: how far any shape's core reaches from the centre of
      * mass (an L1 bound; 0 when turning moves no surface, as for a centred circle) and the
-     * thinnest shape's inner extent */
+     * thinnest shape's inner extent; 0 in a build without continuous collision */
     pg_fix turn_reach, inner_extent;
     uint32_t island;         /* while asleep: the lowest body index of its island */
     uint32_t first_shape;    /* shapes of the body, a list in creation order */

@@ -85,6 +85,12 @@
  * deep overlaps of rounded shapes use the cores' face normals (as Box2D).
  */
 #include "collide.h"
+#include "pogon/config.h" /* PG_CONFIG_SHAPES */
+
+/* Whether this build keeps a kind of two vertices (capsules, segments, chain segments):
+ * without one, shape creation makes no such geometry and the tests for count 2 fold to
+ * false, so their code drops out of a circles-and-boxes build. */
+#define PG__TWO_VERTEX_KEPT PG_SHAPES_KEPT(PG_SHAPES_CAPSULE | PG_SHAPES_SEGMENT | PG_SHAPES_CHAIN)
 
 /* 0.1 * linear slop (0.005 m), Q16.16. */
 #define PG__REF_TOLERANCE ((int64_t)33)
@@ -231,7 +237,7 @@ static void pg__collide_poly_circle(const pg_geom *poly, const pg_geom *circ, in
 
     /* Outside the core (always possible for a segment, which has no inside): Voronoi
      * regions of the face's two vertices. */
-    if (best > 0 || count == 2) {
+    if (best > 0 || (PG__TWO_VERTEX_KEPT && count == 2)) {
         int32_t i2 = pg__next(face, count);
         pg_vec2 v1 = poly->vertices[face], v2 = poly->vertices[i2];
         pg_dir t = pg__tangent(poly->normals[face]);
@@ -537,7 +543,7 @@ static void pg__collide_polygons(const pg_geom *a, const pg_geom *b, pg_fix spec
      * end on one line no face axis shows it) whose clip misses the face or overstates the
      * gap at a side plane: take the better face outright, and if its clip does too, the
      * closest features of that face and its incident edge decide. */
-    if ((sa > 0 || sb > 0 || (a->count == 2 && b->count == 2)) &&
+    if ((sa > 0 || sb > 0 || (PG__TWO_VERTEX_KEPT && a->count == 2 && b->count == 2)) &&
         (c.miss || c.dip[0] > PG__DIP_TOLERANCE || c.dip[1] > PG__DIP_TOLERANCE) &&
         (sa > 0 || sb > 0 || !pg__segments_cross(a->vertices[0], a->vertices[1], b->vertices[0], b->vertices[1])) &&
         pg__clip_overstates(ref, i11, inc, j, &c)) {
@@ -597,7 +603,8 @@ static void pg__collide_polygons(const pg_geom *a, const pg_geom *b, pg_fix spec
                     inc = g;
                     flip = !flip;
                     i11 = j;
-                    if (ref->count == 2 && pg__sep2(v, ref->normals[i11], pg__face_off2(ref, i11)) < 0) i11 = 1 - i11;
+                    if (PG__TWO_VERTEX_KEPT && ref->count == 2 && pg__sep2(v, ref->normals[i11], pg__face_off2(ref, i11)) < 0)
+                        i11 = 1 - i11;
                     j = pg__incident_edge(inc, ref->normals[i11]);
                     pg__clip_edge(ref, i11, inc, j, (int64_t)ref->radius - inc->radius, &c);
                 }

@@ -83,6 +83,11 @@ void pg__shape_set_extents(pg_shape *s)
     const pg_geom *g = &s->local;
     int64_t outer = 0, inner = INT64_MAX;
     int32_t k;
+    if (!PG__EFFECT(PG_EFFECT_CONTINUOUS)) { /* nothing reads them: a build without the effect drops this code */
+        s->turn_outer = 0;
+        s->inner_extent = 0;
+        return;
+    }
     for (k = 0; k < g->count; ++k) {
         /* body-frame coordinates within the envelope: |d| < 2^24, d^2 < 2^49 */
         int64_t dx = (int64_t)g->vertices[k].x - g->centroid.x, dy = (int64_t)g->vertices[k].y - g->centroid.y;
@@ -120,6 +125,11 @@ void pg__body_set_turn_extents(pg_world *w, uint32_t body)
     pg_body *b = &w->bodies[body];
     int64_t reach = 0, inner = 0;
     uint32_t s;
+    if (!PG__EFFECT(PG_EFFECT_CONTINUOUS)) { /* as in pg__shape_set_extents */
+        b->turn_reach = 0;
+        b->inner_extent = 0;
+        return;
+    }
     for (s = b->first_shape; s != PG_NULL_INDEX; s = w->shapes[s].next) {
         int64_t r = shape_reach(&w->shapes[s], b->local_center);
         if (r > reach) reach = r;

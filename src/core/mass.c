@@ -9,11 +9,14 @@
  *     lengths   in u = 2^-32 m (Q16.16 inputs times 2^16, relative to O)
  *     polygon   triangle fan about O: with c = a x b,
  *               24 area = 12 c, 24 first = 4 c (a + b), 24 second = 2 c (a.a + a.b + b.b)
- *     capsule   (circle = capsule of length 0) with L = |q - p|, s = p + q (= 2 centre):
+ *     circle    area = pi r^2,  I_centre = pi r^2 r^2/2
+ *     capsule   with L = |q - p|, s = p + q (= 2 centre): the circle at the centre plus
+ *               the terms with L (so a capsule of length 0 is that circle, bit for bit)
  *               area = 2 r L + pi r^2,  I_centre = r L^3/6 + 2 r^3 L + pi r^2 (r^2/2 + L^2/4)
  *               (the rectangle L x 2r plus the two half discs moved by the parallel axis
  *               theorem about their centroids at L/2 + 4r/(3 pi); that pi cancels, so
- *               only the disc's own pi r^2 terms remain).
+ *               only the disc's own pi r^2 terms remain). A build without capsules
+ *               (PG_CONFIG_SHAPES) compiles the circle's formula only.
  *   pi enters as round(pi 2^61) and L as round(L 2^61) (integer square root of the
  *   exact L^2 2^122): both relative errors are below 2^-62, far below every output LSB.
  *   Each output is then rounded ONCE (nearest, ties away from zero) by an exact
@@ -74,6 +77,7 @@
  *   more geometries adds log2(count) < 31 bits: still below the sign bit, 2^383.
  */
 #include "mass.h"
+#include "pogon/config.h" /* PG_CONFIG_SHAPES */
 
 /* Kept out of line so that the stages of a compound, which run one after another, do
  * not share one stack frame as large as all of them together. */
@@ -377,44 +381,63 @@ PG__OUT_OF_LINE static void pg__poly_moments(const pg__pt *v, int n, pg__moments
     out->m2 = pg__big_shl(out->m2, 61);
 }
 
-/* The second moment of a capsule about O (times 24 2^61) from its parts: 24 I_centre =
- * 4 r L^3 + 48 r^3 L + pi r^2 (12 r^2 + 6 L^2), plus 6 area |s|^2 (half = 12 area is
- * even: 24 r L + 12 pi r^2). Apart from pg__capsule_moments, so that its temporaries and
- * the square root's are not on the stack at once. */
-PG__OUT_OF_LINE static pg__big pg__capsule_second(const pg__big *rl, const pg__big *l2, const pg__big *r2, const pg__big *pir2,
-                                                  int64_t sx, int64_t sy)
+/* Circle of centre c and radius r (u): 24 area = 24 pi r^2, 24 first = 24 area c,
+ * 24 second = 24 area (r^2/2 + |c|^2) = pi r^2 (12 r^2 + 24 |c|^2). A capsule is this
+ * circle at its midpoint plus the terms of its length (pg__capsule_moments), so a
+ * circle's moments are the same integers as a capsule of length 0 gives, and a build
+ * without capsules keeps no square root and no length terms. */
+PG__OUT_OF_LINE static void pg__circle_moments(pg__pt c, int64_t r, pg__moments *out)
+{
+    pg__big r2 = pg__big_mul2(r, r);
+    pg__big pir2 = pg__big_mul_i64(r2, PG__PI_Q61); /* pi r^2 2^61 */
+    pg__big c2 = pg__big_add(pg__big_mul2(c.x, c.x), pg__big_mul2(c.y, c.y));
+    pg__big spread = pg__big_add(pg__big_mul_i64(r2, 12), pg__big_mul_i64(c2, 24)); /* 12 r^2 + 24 |c|^2 */
+    out->m0 = pg__big_mul_i64(pir2, 24);
+    out->m1x = pg__big_mul_i64(pir2, 24 * c.x);
+    out->m1y = pg__big_mul_i64(pir2, 24 * c.y);
+    out->m2 = pg__big_mul(pir2, spread);
+}
+
+/* What a capsule's length adds to the second moment of the circle at its midpoint
+ * (times 24 2^61). Of 24 I_centre = 4 r L^3 + 48 r^3 L + pi r^2 (12 r^2 + 6 L^2) and
+ * 24 area |centre|^2 = (12 r L + 6 pi r^2) |s|^2 (s = p + q = 2 centre), the terms with
+ * L: r L (4 L^2 + 48 r^2 + 12 |s|^2) + 6 pi r^2 L^2. Apart from pg__capsule_moments, so
+ * that its temporaries and the square root's are not on the stack at once. */
+PG__OUT_OF_LINE static pg__big pg__capsule_second_of_length(const pg__big *rl, const pg__big *l2, int64_t r, int64_t sx,
+                                                           int64_t sy)
 {
     /* one product per statement (exact sums, any order): few temporaries live at once */
-    pg__big t = pg__big_mul(*rl, *l2), u;
-    t = pg__big_mul_i64(t, 4);
-    u = pg__big_mul(*rl, *r2);
-    t = pg__big_add(t, pg__big_mul_i64(u, 48));
-    u = pg__big_mul_i64(*r2, 12);
-    u = pg__big_add(u, pg__big_mul_i64(*l2, 6));
-    t = pg__big_add(t, pg__big_mul(*pir2, u));
-    u = pg__big_mul_i64(*rl, 12);
-    u = pg__big_add(u, pg__big_mul_i64(*pir2, 6));
-    u = pg__big_mul(pg__big_add(pg__big_mul2(sx, sx), pg__big_mul2(sy, sy)), u);
-    return pg__big_add(t, u);
+    pg__big r2 = pg__big_mul2(r, r), t = pg__big_mul_i64(*l2, 4), u;
+    t = pg__big_add(t, pg__big_mul_i64(r2, 48));
+    u = pg__big_add(pg__big_mul2(sx, sx), pg__big_mul2(sy, sy));
+    t = pg__big_add(t, pg__big_mul_i64(u, 12));
+    t = pg__big_mul(*rl, t);
+    u = pg__big_mul(pg__big_mul_i64(r2, PG__PI_Q61), *l2);
+    return pg__big_add(t, pg__big_mul_i64(u, 6));
 }
 
 /* L 2^61 = round(sqrt(L^2 2^122)) for the capsule's L^2. */
 PG__OUT_OF_LINE static pg__big pg__length_q61(const pg__big *l2) { return pg__big_isqrt_round(pg__big_shl(*l2, 122)); }
 
-/* Capsule p..q of radius r (u); p == q is a circle. */
+/* Capsule p..q of radius r (u): the circle at its midpoint, plus the rectangle 2 r x L
+ * and what moving the two half discs apart adds. */
 PG__OUT_OF_LINE static void pg__capsule_moments(pg__pt p, pg__pt q, int64_t r, pg__moments *out)
 {
     int64_t dx = q.x - p.x, dy = q.y - p.y, sx = p.x + q.x, sy = p.y + q.y;
-    pg__big l2 = pg__big_add(pg__big_mul2(dx, dx), pg__big_mul2(dy, dy));      /* L^2 */
-    pg__big lq = pg__length_q61(&l2);                                         /* L 2^61 */
-    pg__big r2 = pg__big_mul2(r, r);
-    pg__big pir2 = pg__big_mul_i64(r2, PG__PI_Q61);                            /* pi r^2 2^61 */
-    pg__big rl = pg__big_mul_i64(lq, r);                                       /* r L 2^61 */
-    pg__big half = pg__big_add(pg__big_mul_i64(rl, 24), pg__big_mul_i64(pir2, 12)); /* 12 area */
-    out->m0 = pg__big_shl(half, 1);
-    out->m1x = pg__big_mul_i64(half, sx);
-    out->m1y = pg__big_mul_i64(half, sy);
-    out->m2 = pg__capsule_second(&rl, &l2, &r2, &pir2, sx, sy);
+    pg__pt mid;
+    pg__moments length;
+    pg__big l2 = pg__big_add(pg__big_mul2(dx, dx), pg__big_mul2(dy, dy)); /* L^2 */
+    pg__big rl = pg__big_mul_i64(pg__length_q61(&l2), r);                 /* r L 2^61 */
+    /* exact: coordinates relative to O are multiples of 2^16 u, so sx and sy are even */
+    mid.x = sx / 2;
+    mid.y = sy / 2;
+    pg__circle_moments(mid, r, out);
+    /* the rectangle's 24 area = 48 r L, its first moment 24 area s / 2 */
+    length.m0 = pg__big_mul_i64(rl, 48);
+    length.m1x = pg__big_mul_i64(rl, 24 * sx);
+    length.m1y = pg__big_mul_i64(rl, 24 * sy);
+    length.m2 = pg__capsule_second_of_length(&rl, &l2, r, sx, sy);
+    pg__moments_add(out, &length, 1);
 }
 
 /* ---- convex clipping ---------------------------------------------------------------- */
@@ -684,9 +707,16 @@ PG__OUT_OF_LINE static int pg__geom_add(const pg_geom *g, int64_t rho, int64_t o
             keep->rho = rho;
         }
     } else {
+        /* A kind this build leaves out (PG_CONFIG_SHAPES) never reaches here, as shape
+         * creation refuses it; its formula is then not compiled in, and such a geometry
+         * would count as having no area. */
         int64_t r = g->radius > 0 ? (int64_t)g->radius * 65536 : 0;
-        if (r == 0) return 0; /* segment or point: no area */
-        pg__capsule_moments(v[0], v[g->count - 1], r, &m);
+        if (r > 0 && g->count == 1 && PG_SHAPES_KEPT(PG_SHAPES_CIRCLE))
+            pg__circle_moments(v[0], r, &m);
+        else if (r > 0 && g->count == 2 && PG_SHAPES_KEPT(PG_SHAPES_CAPSULE))
+            pg__capsule_moments(v[0], v[1], r, &m);
+        else
+            return 0; /* segment or point: no area */
     }
     pg__moments_add(&acc->mass, &m, rho);
     pg__moments_add(&acc->area, &m, 1);

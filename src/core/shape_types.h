@@ -15,7 +15,8 @@ typedef struct pg_shape {
     uint32_t category, mask;
     /* derived from `local` (pg__shape_set_extents), for continuous collision of turning
      * bodies: the farthest core vertex from local.centroid (0 for a circle) and the
-     * thinnest extent, the centroid's distance to the nearest face plus the radius */
+     * thinnest extent, the centroid's distance to the nearest face plus the radius; 0 in
+     * a build without continuous collision (PG_CONFIG_EFFECTS) */
     pg_fix turn_outer, inner_extent;
 } pg_shape;
 

@@ -304,6 +304,99 @@ static void test_capsule(void **state)
     }
 }
 
+/* A circle has its own formula (mass.c, pg__circle_moments), so that a build without
+ * capsules keeps no capsule code; it must give the bits of the capsule of length 0 it
+ * replaced, for every input. Returns 1 when the circle has mass, so the callers can show
+ * that their sweeps were not all trivial. */
+static int expect_circle_as_capsule(pg_vec2 c, pg_fix r, pg_fix density, const char *what)
+{
+    pg_vec2 ends[2] = {c, c};
+    pg_geom circ = geom_raw(&c, 1, r), caps = geom_raw(ends, 2, r);
+    pg_mass_data a = pg_geom_mass(&circ, density), b = pg_geom_mass(&caps, density);
+    expect_same(&a, &b, what);
+    return a.mass > 0;
+}
+
+/* In a compound the circle's centre is away from the reference point, so its first
+ * moment and the parallel-axis term of its second moment are not zero. */
+static int expect_circle_as_capsule_in_compound(pg_vec2 c, pg_fix r, const pg_geom *other, pg_fix rho_circle,
+                                                pg_fix rho_other, const char *what)
+{
+    pg_vec2 ends[2] = {c, c};
+    pg_geom circ = geom_raw(&c, 1, r), caps = geom_raw(ends, 2, r);
+    const pg_geom *with_circle[2] = {other, &circ}, *with_capsule[2] = {other, &caps};
+    pg_fix rho[2] = {rho_other, rho_circle};
+    pg_mass_data a = pg_compound_mass(with_circle, rho, 2, mass_work);
+    pg_mass_data b = pg_compound_mass(with_capsule, rho, 2, mass_work);
+    expect_same(&a, &b, what);
+    return a.inertia > 0 && a.inertia < INT64_MAX;
+}
+
+static void test_circle_matches_zero_length_capsule(void **state)
+{
+    (void)state;
+    /* the envelope's edges (radius 0.005..50 m, positions +-1000 m, density
+     * 0.1..100 kg/m^2), one LSB either side, and every int32 extreme */
+    static const pg_fix radii[] = {INT32_MIN, -1, 0, 1, 2, 327, 328, 655, 3277, 65536, 65537, 50 << 16, (50 << 16) + 1,
+                                   1000 << 16, PG_FIX_MAX};
+    static const pg_fix coords[] = {INT32_MIN, -(1000 << 16), -65537, -1, 0, 1, 32768, 1000 << 16, PG_FIX_MAX};
+    static const pg_fix densities[] = {INT32_MIN, -1, 0, 1, 6554, 65536, 100 << 16, PG_FIX_MAX};
+    const size_t nr = sizeof radii / sizeof radii[0], nc = sizeof coords / sizeof coords[0];
+    const size_t nd = sizeof densities / sizeof densities[0];
+    pgt_rng rng = pgt_rng_seed(30);
+    long with_mass = 0, cases = 0;
+    char what[96];
+    for (size_t i = 0; i < nr; ++i)
+        for (size_t x = 0; x < nc; ++x)
+            for (size_t y = 0; y < nc; ++y)
+                for (size_t d = 0; d < nd; ++d) {
+                    snprintf(what, sizeof what, "edge r=%ld c=(%ld,%ld) rho=%ld", (long)radii[i], (long)coords[x],
+                             (long)coords[y], (long)densities[d]);
+                    with_mass += expect_circle_as_capsule(pg_v2(coords[x], coords[y]), radii[i], densities[d], what);
+                    ++cases;
+                }
+    /* the edges with mass: 12 positive radii x 5 positive densities x 81 centres, less the
+     * 3 x 81 below half an LSB of mass (radius 1 or 2 LSB at density 1 LSB, radius 1 LSB
+     * at 0.1 kg/m^2) */
+    PG_EXPECT_EQ(with_mass, (12 * 5 - 3) * 81, "%s", "edge cases with mass");
+    PG_EXPECT_EQ(cases, (long)(nr * nc * nc * nd), "%s", "edge cases");
+
+    /* seeded sweep: radii and densities log-spread over the envelope (any int32 one case in
+     * eight), centres within +-1000 m (any int32 one case in eight) */
+    with_mass = 0;
+    long expected_with_mass = 0;
+    for (long it = 0; it < 100000; ++it) {
+        uint64_t pick = pgt_next(&rng);
+        pg_fix r = (pick & 7u) == 0 ? pgt_fix_any(&rng) : (pg_fix)(327 + pgt_below(&rng, (50 << 16) - 326) / (1u + pgt_below(&rng, 64)));
+        pg_fix rho = (pick & 56u) == 0 ? pgt_fix_any(&rng) : (pg_fix)(6554 + pgt_below(&rng, (100 << 16) - 6553) / (1u + pgt_below(&rng, 64)));
+        pg_fix cx = (pick & 448u) == 0 ? pgt_fix_any(&rng) : pgt_fix_bits(&rng, 26);
+        pg_fix cy = (pick & 448u) == 0 ? pgt_fix_any(&rng) : pgt_fix_bits(&rng, 26);
+        snprintf(what, sizeof what, "sweep %ld: r=%ld c=(%ld,%ld) rho=%ld", it, (long)r, (long)cx, (long)cy, (long)rho);
+        with_mass += expect_circle_as_capsule(pg_v2(cx, cy), r, rho, what);
+        /* the mass in Q32.32 LSB is pi r^2 rho 2^-16 (r, rho in Q16.16): at least half an LSB */
+        expected_with_mass += r > 0 && rho > 0 && LPI * (ld)r * (ld)r * (ld)rho >= 32768.0L;
+    }
+    PG_EXPECT_EQ(with_mass, expected_with_mass, "%s", "sweep cases with mass");
+    PG_EXPECT_LE(100000 - with_mass, 13000, "%s", "the sweep's cases without mass (12.1 %, 1 - (15/16)^2, draw a negative radius or density)");
+
+    /* beside a box: the circle away from the reference point, within 32 m of the origin
+     * and up to 5 m in size, so that few inertias saturate */
+    with_mass = 0;
+    for (long it = 0; it < 2000; ++it) {
+        pg_fix half = (pg_fix)(655 + pgt_below(&rng, 5 << 16));
+        pg_fix bx = pgt_fix_bits(&rng, 21), by = pgt_fix_bits(&rng, 21);
+        pg_vec2 corners[4] = {pg_v2(bx - half, by - half), pg_v2(bx + half, by - half), pg_v2(bx + half, by + half),
+                              pg_v2(bx - half, by + half)};
+        pg_geom b = geom_raw(corners, 4, 0);
+        pg_fix r = (pg_fix)(327 + pgt_below(&rng, (5 << 16) - 326));
+        pg_vec2 c = pg_v2(pgt_fix_bits(&rng, 21), pgt_fix_bits(&rng, 21));
+        pg_fix rho_c = (pg_fix)(6554 + pgt_below(&rng, 100 << 16)), rho_b = (pg_fix)(6554 + pgt_below(&rng, 100 << 16));
+        snprintf(what, sizeof what, "beside a box %ld: r=%ld c=(%ld,%ld)", it, (long)r, (long)c.x, (long)c.y);
+        with_mass += expect_circle_as_capsule_in_compound(c, r, &b, rho_c, rho_b, what);
+    }
+    PG_EXPECT_LE(2000 - with_mass, 20, "%s", "compounds whose inertia saturates");
+}
+
 static void test_segment(void **state)
 {
     (void)state;
@@ -983,6 +1076,7 @@ int main(void)
         cmocka_unit_test(test_off_centre_box),
         cmocka_unit_test(test_triangles),
         cmocka_unit_test(test_capsule),
+        cmocka_unit_test(test_circle_matches_zero_length_capsule),
         cmocka_unit_test(test_segment),
         cmocka_unit_test(test_octagon),
         cmocka_unit_test(test_compound_separate),

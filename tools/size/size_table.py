@@ -6,6 +6,8 @@ Usage (from anywhere; paths are relative to the repository):
   tools/size/size_table.py --render --results docs/results/embedded.json
   tools/size/size_table.py --check [--build DIR]      the cortex_m_size_and_no_float test
   tools/size/size_table.py --update-limits             after a size change on purpose
+  tools/size/size_table.py --one CONFIG [--cpu m4|m0plus]   one configuration's flash and
+                                                       largest functions; writes nothing
 
 Builds the library with arm-none-eabi-gcc -mthumb -Os -ffunction-sections
 -fdata-sections -mgeneral-regs-only, newlib-nano, --gc-sections, PG_FAST_DIV64=0, for
@@ -205,6 +207,22 @@ def measure_flash(build, jobs):
             elf = link_config(v_out, cpu, v_lib, os.path.join(HERE, "step_only.c"), [], name)
             result[(name, cpu)] = (flash_of(elf) - base, holders(elf[:-4] + ".map"))
     return result
+
+
+def measure_one(build, name, cpu, jobs, top=16):
+    """Flash of one configuration on one CPU, its largest parts and its largest functions:
+    the one library that configuration needs, not all of them (--one)."""
+    flags, suffix = next(((f, s) for n, f, s in VARIANTS if n == name), ([], ""))
+    out, objects = compile_all(build, cpu, jobs, flags, suffix)
+    lib = archive(out, objects)
+    base = flash_of(link_config(out, cpu, lib, os.path.join(HERE, "baseline.c"), [], "baseline"))
+    keep = {"core-module": lambda: public_functions(objects, only=core_sources()),
+            "core": lambda: public_functions(objects, FILE_FORMATS),
+            "everything": lambda: public_functions(objects)}.get(name, lambda: [])()
+    main_src = os.path.join(HERE, "baseline.c" if keep else "step_only.c")
+    elf = link_config(out, cpu, lib, main_src, keep, name)
+    mapfile = elf[:-4] + ".map"
+    return flash_of(elf) - base, holders(mapfile), functions_of(mapfile, top)
 
 
 def functions_of(mapfile, top=12):
@@ -594,7 +612,12 @@ def main():
     ap.add_argument("--check", action="store_true", help="flash only: fail above the limits")
     ap.add_argument("--update-limits", action="store_true", help="write today's flash as the limits")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--one", metavar="CONFIG", choices=CONFIGS,
+                    help="measure only this configuration's flash and print its largest functions; writes nothing")
+    ap.add_argument("--cpu", choices=("m4", "m0plus"), default="m4", help="the CPU of --one")
     args = ap.parse_args()
+    if args.one and (args.render or args.check or args.update_limits or args.results):
+        ap.error("--one measures and prints only: not with --render, --check, --update-limits or --results")
     if args.render:
         if not args.results:
             ap.error("--render needs --results FILE")
@@ -606,11 +629,19 @@ def main():
         except (OSError, ValueError, KeyError, TypeError, IndexError) as e:
             raise SystemExit("size_table: %s: not a results file of size_table.py (%s: %s)" % (args.results, type(e).__name__, e))
         return 0
-    for tool in (CC, QEMU) if not args.check else (CC,):
+    for tool in (CC, QEMU) if not (args.check or args.one) else (CC,):
         if shutil.which(tool) is None:
             print("size_table: %s not found (scripts/setup-deps.sh cortex-m installs it): skipped" % tool)
             return 77
     build = os.path.abspath(args.build)
+    if args.one:
+        cpu = {"m4": "M4", "m0plus": "M0+"}[args.cpu]
+        size, parts, functions = measure_one(build, args.one, cpu, args.jobs)
+        print("flash %s %s %d B (%s)  budget %s KiB  largest: %s" % (
+            args.one, cpu, size, kib(size), BUDGETS[args.one] or "-", ", ".join("%s %d" % p for p in parts)))
+        for f, n, b in functions:
+            print("  %6d B  %s %s" % (b, f, n))
+        return 0
     flash = measure_flash(build, args.jobs)
     for (name, cpu), (size, parts) in sorted(flash.items()):
         print("flash %-11s %-4s %7d B  budget %s KiB  largest: %s" % (
