@@ -122,7 +122,10 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
  * else is written; NULL pointers among the other arguments are still PG_ERR_NULL,
  * checked first. */
 #define PG_REPLAY_WORK_BYTES (PG_SCENE_WORK_BYTES + 2048u) /**< an upper bound of pg_replay_work_size() */
+/** Bytes of the work area the replay `_in` calls need: the scene reader's
+ * (pg_scene_work_size) and what the replay calls keep. At most PG_REPLAY_WORK_BYTES. */
 size_t pg_replay_work_size(void);
+/** pg_replay_read with a work area from the caller (above). */
 pg_result pg_replay_read_in(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error, void *work,
                             size_t work_size);
 

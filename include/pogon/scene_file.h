@@ -132,6 +132,7 @@ pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_sce
  * still PG_ERR_NULL, checked first). */
 pg_result pg_scene_read_def_in(const char *text, size_t length, pg_world_def *def, pg_scene_error *error, void *work,
                                size_t work_size);
+/** pg_scene_load with a work area from the caller (pg_scene_read_def_in). */
 pg_result pg_scene_load_in(pg_world *world, const char *text, size_t length, pg_scene_error *error, void *work,
                            size_t work_size);
 
