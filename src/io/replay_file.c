@@ -328,7 +328,7 @@ static pg_result check_scene(const pg_replay_info *info, pg_world_def *def, pg_r
 
 /* PG_OK when `recorded` is this build's numeric configuration; otherwise
  * PG_ERR_INCOMPATIBLE and a message naming both. */
-static pg_result numeric_config_error(uint32_t recorded, pg_replay_error *e)
+PG__OWN_FRAME pg_result numeric_config_error(uint32_t recorded, pg_replay_error *e)
 {
     msg m;
     if (recorded == pg_numeric_config()) return PG_OK;
@@ -596,8 +596,10 @@ pg_result pg__replay_read(const uint8_t *data, size_t size, pg_replay_info *info
     clear_error(error);
     r = check_file(data, size, info, &w->info, error);
     if (r != PG_OK) return r;
-    r = check_scene(&w->info, &w->def, error, w);
-    if (r != PG_OK) return r;
+    /* check_scene, written out: one frame less above the scene reader */
+    r = pg_scene_read_def_in(w->info.scene_text, w->info.scene_size, &w->def, &w->scene_error, scene_work(w),
+                             pg_scene_work_size());
+    if (r != PG_OK) return scene_error(&w->info, &w->scene_error, error, "scene text does not parse: ");
     *info = w->info;
     /* sound, but stepped with other numerics than this build's: playing it here could
      * only diverge, so say which switch differs instead */
@@ -727,6 +729,26 @@ pg_result pg_replay_world_memory_size(const pg_replay_info *info, size_t *size, 
     return pg_replay_world_memory_size_in(info, size, error, work, sizeof work);
 }
 
+/* *e for a scene whose world cannot be created (pg_world_create's result r). */
+PG__OWN_FRAME pg_result world_error(const pg_replay_info *info, pg_result r, pg_replay_error *e)
+{
+    msg m = set_error(e, info->scene_offset, "scene", "text", -1, -1, "cannot create the scene's world: ");
+    pg__text_put(&m, pg_result_name(r));
+    return r == PG_ERR_MEMORY ? PG_ERR_MEMORY : PG_ERR_INVALID_ARGUMENT;
+}
+
+/* *first: the player's world against checkpoint 0, at p->cursor. */
+PG__OWN_FRAME void compare_first(const pg_replay_player *p, pg_replay_frame_result *first)
+{
+    uint8_t *z = (uint8_t *)first;
+    size_t i;
+    for (i = 0; i < sizeof *first; ++i) z[i] = 0;
+    first->checkpoint = 1;
+    first->checkpoint_index = 0;
+    first->match = compare_at(p->world, p->data, &p->info, p->cursor, &first->expected_hash, &first->actual_hash,
+                              &first->section_mismatch);
+}
+
 pg_result pg_replay_player_begin_in(pg_replay_player *p, const uint8_t *data, const pg_replay_info *info, void *memory,
                                     size_t memory_size, pg_replay_frame_result *first, pg_replay_error *error, void *work,
                                     size_t work_size)
@@ -750,26 +772,15 @@ pg_result pg_replay_player_begin_in(pg_replay_player *p, const uint8_t *data, co
     if (r != PG_OK) return r;
     r = pg_world_create(&w->def, memory, memory_size, &p->world);
     if (r != PG_OK) {
-        msg m = set_error(error, info->scene_offset, "scene", "text", -1, -1, "cannot create the scene's world: ");
-        pg__text_put(&m, pg_result_name(r));
         p->world = NULL;
-        return r == PG_ERR_MEMORY ? PG_ERR_MEMORY : PG_ERR_INVALID_ARGUMENT;
+        return world_error(info, r, error);
     }
     r = pg_scene_load_in(p->world, info->scene_text, info->scene_size, &w->scene_error, scene_work(w), pg_scene_work_size());
     if (r != PG_OK) {
         p->world = NULL;
         return scene_error(info, &w->scene_error, error, "scene does not load: ");
     }
-    /* checkpoint 0 */
-    if (first != NULL) {
-        uint8_t *z = (uint8_t *)first;
-        size_t i;
-        for (i = 0; i < sizeof *first; ++i) z[i] = 0;
-        first->checkpoint = 1;
-        first->checkpoint_index = 0;
-        first->match = compare_at(p->world, data, info, p->cursor, &first->expected_hash, &first->actual_hash,
-                                  &first->section_mismatch);
-    }
+    if (first != NULL) compare_first(p, first);
     p->cursor += checkpoint_size(info->section_count);
     p->checkpoints_checked = 1;
     return PG_OK;

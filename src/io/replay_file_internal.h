@@ -17,6 +17,8 @@ typedef struct pg__replay_work {
     pg_replay_info info;           /* pg_replay_read: the file's description until the scene is checked */
     pg_scene_error scene_error;    /* the scene reader's error, before it names a file offset */
     pg_world_def def;              /* the scene's world settings */
+    size_t upgrade_size;           /* pg_replay_upgrade: the converted file's size */
+    uint32_t upgrade_version;      /* pg_replay_upgrade: the old file's format version */
 } pg__replay_work;
 
 /* The replay part of `work`, or NULL after *error (may be NULL) names the size and

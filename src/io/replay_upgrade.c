@@ -110,13 +110,14 @@ static int v2_hashes_sound(const uint8_t *in, size_t size)
 }
 
 /* The header part of pg_replay_upgrade: `out` holds the file in this build's format, with
- * its size in *need_out and the old file's format version in *version_out; PG_OK, or the refusal (out_size as pg_replay_upgrade sets it). Its
- * frame stays beside, not under, the reader's chain. */
+ * its size and the old file's format version in w (upgrade_size, upgrade_version); PG_OK,
+ * or the refusal (out_size as pg_replay_upgrade sets it). Its frame stays beside, not
+ * under, the reader's chain. */
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((noinline))
 #endif
 static pg_result convert(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
-                         size_t *out_size, pg_replay_error *error, size_t *need_out, uint32_t *version_out)
+                         size_t *out_size, pg_replay_error *error, pg__replay_work *w)
 {
     uint32_t version;
     size_t need, i;
@@ -150,8 +151,8 @@ static pg_result convert(const uint8_t *data, size_t size, uint32_t numeric_conf
         copy_bytes(out, data, size);
     }
     if (version < PG_REPLAY_FORMAT_VERSION) restamp_version(out, need);
-    *need_out = need;
-    *version_out = version;
+    w->upgrade_size = need;
+    w->upgrade_version = version;
     return PG_OK;
 }
 
@@ -159,18 +160,16 @@ pg_result pg_replay_upgrade_in(const uint8_t *data, size_t size, uint32_t numeri
                                size_t *out_size, pg_replay_error *error, void *work, size_t work_size)
 {
     pg__replay_work *w = pg__replay_work_in(work, work_size, error);
-    size_t need = 0;
-    uint32_t version = 0;
     pg_result r;
     if (w == NULL) return PG_ERR_INVALID_ARGUMENT;
-    r = convert(data, size, numeric_config, out, capacity, out_size, error, &need, &version);
+    r = convert(data, size, numeric_config, out, capacity, out_size, error, w);
     if (r != PG_OK) return r;
     /* the rest of the file (scene, records, block hashes), as the current reader sees it */
-    r = pg__replay_read(out, need, &w->upgrade_info, &w->upgrade_error, w);
+    r = pg__replay_read(out, w->upgrade_size, &w->upgrade_info, &w->upgrade_error, w);
     if (r == PG_ERR_INVALID_ARGUMENT || r == PG_ERR_NULL) {
         if (error != NULL) {
             *error = w->upgrade_error;
-            if (version == 1u && error->offset >= (size_t)V2_HEADER_SIZE) error->offset -= 4u; /* the old file's offset */
+            if (w->upgrade_version == 1u && error->offset >= (size_t)V2_HEADER_SIZE) error->offset -= 4u; /* the old file's offset */
         }
         if (out_size != NULL) *out_size = 0;
         return r;

@@ -2014,22 +2014,23 @@ static pg_result check_joint_room(scene_parser *P, const pg_world *world)
     return PG_OK;
 }
 
-/* The READ pass of pg_scene_load: the whole text, with the world's free slots as the room
- * the scene has, then the world's settings and that room. PG_OK when the LOAD pass can
- * run; the world is not touched. */
-PG__OWN_FRAME pg_result check_load(scene_parser *P, const pg_world *world, const char *text, size_t length, pg_scene_error *error)
+/* The READ pass of pg_scene_load, before it runs: the world's free slots are the room the
+ * scene has, so that the pass notes where the scene outgrows them. */
+static void begin_check(scene_parser *P, const pg_world *world, const char *text, size_t length, pg_scene_error *error)
+{
+    parser_init(P, text, length, error, NULL);
+    P->room_given = 1;
+    P->room_bodies = world->def.max_bodies - world->body_count;
+    P->room_shapes = world->def.max_shapes - world->shape_count;
+    P->room_joints = world->def.max_joints - world->joint_count;
+}
+
+/* After a successful READ pass of pg_scene_load: the world's settings and its room. PG_OK
+ * when the LOAD pass can run; the world is not touched. */
+PG__OWN_FRAME pg_result check_world(scene_parser *P, const pg_world *world)
 {
     const pg_world_def *wd = &world->def;
-    pg_result r;
-    int which;
-    parser_init(P, text, length, error, NULL); /* check everything first */
-    P->room_given = 1; /* and note where the scene outgrows the world's free slots */
-    P->room_bodies = wd->max_bodies - world->body_count;
-    P->room_shapes = wd->max_shapes - world->shape_count;
-    P->room_joints = wd->max_joints - world->joint_count;
-    r = run(P);
-    if (r != PG_OK) return r;
-    which = differing_setting(wd, &P->def);
+    int which = differing_setting(wd, &P->def);
     if (which >= 0) {
         const uint64_t bit = (uint64_t)1 << which;
         msg m;
@@ -2069,7 +2070,9 @@ pg_result pg_scene_load_in(pg_world *world, const char *text, size_t length, pg_
     if (text == NULL) return fail_null(error, "text");
     P = parser_in(work, work_size, error);
     if (P == NULL) return PG_ERR_INVALID_ARGUMENT;
-    r = check_load(P, world, text, length, error);
+    begin_check(P, world, text, length, error); /* check everything first: nothing is made on a refusal */
+    r = run(P);
+    if (r == PG_OK) r = check_world(P, world);
     if (r != PG_OK) return r;
     parser_init(P, text, length, error, world);
     P->body_base = world->body_high;
