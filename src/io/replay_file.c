@@ -342,7 +342,7 @@ PG__OWN_FRAME pg_result numeric_config_error(uint32_t recorded, pg_replay_error 
 
 /* Everything pg_replay_read checks but the scene, into *in (the work area's): the header,
  * the records and every hash. Its frame (commands decoded, counters) stays beside, not
- * under, the scene reader's chain-> */
+ * under, the scene reader's chain. */
 PG__OWN_FRAME pg_result check_file(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_info *in,
                                    pg_replay_error *error)
 {
