@@ -37,6 +37,7 @@
 #define POGON_REPLAY_FILE_H
 
 #include "pogon/replay.h"
+#include "pogon/scene_file.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -59,7 +60,8 @@ extern "C" {
 /** Where and why a replay file was refused. */
 typedef struct pg_replay_error {
     size_t offset;       /**< byte offset in the file where the problem is */
-    const char *region;  /**< "header", "scene", "frame", "checkpoint", "end", "file" (static) */
+    const char *region;  /**< "header", "scene", "frame", "checkpoint", "end", "file"; "work" for a
+                              caller's work area (the `_in` calls) (static) */
     const char *field;   /**< the field, e.g. "format_version", "command_count", "kind" (static) */
     int64_t frame;       /**< frame record the field belongs to, or -1 */
     int64_t command;     /**< command index within that frame, or -1 */
@@ -103,6 +105,30 @@ typedef struct pg_replay_info {
  *     filled, so the file can be shown, but pg_replay_player_begin refuses it. */
 pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error);
 
+/* ---- small stacks: a work area from the caller -------------------------------------- */
+/** The calls that read the file's scene (pg_replay_read, pg_replay_world_memory_size,
+ * pg_replay_player_begin, pg_replay_upgrade) put a work area of PG_REPLAY_WORK_BYTES on
+ * their own stack: the scene reader's (pg_scene_work_size, scene_file.h) and what they
+ * keep themselves. Their `_in` forms take it from the caller instead, for small stacks
+ * (a microcontroller's): no frame on their path is then larger than a few hundred bytes
+ * and the deepest call stays under 4 KiB on a 32-bit target (docs/embedded.md, "Stack").
+ * Results, errors and messages are those of the plain calls.
+ *
+ * `work`: at least pg_replay_work_size() bytes, aligned to 8 (the alignment of uint64_t
+ * on the targets pogon supports), whose contents do not matter; it is overwritten, and
+ * nothing in it is needed after the call (a player does not keep it). A work area that
+ * is NULL, misaligned or too small is refused with PG_ERR_INVALID_ARGUMENT and *error
+ * (region "work", field "work_size", offset 0) naming the size needed, before anything
+ * else is written; NULL pointers among the other arguments are still PG_ERR_NULL,
+ * checked first. */
+#define PG_REPLAY_WORK_BYTES (PG_SCENE_WORK_BYTES + 2048u) /**< an upper bound of pg_replay_work_size() */
+/** Bytes of the work area the replay `_in` calls need: the scene reader's
+ * (pg_scene_work_size) and what the replay calls keep. At most PG_REPLAY_WORK_BYTES. */
+size_t pg_replay_work_size(void);
+/** pg_replay_read with a work area from the caller (above). */
+pg_result pg_replay_read_in(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error, void *work,
+                            size_t work_size);
+
 /** A checkpoint of a valid file, by index 0 .. checkpoint_count-1 (frame = index * N).
  * sections receives min(section_count, PG_SECTION_COUNT) hashes; the rest are zeroed. */
 pg_result pg_replay_checkpoint(const uint8_t *data, const pg_replay_info *info, uint32_t index,
@@ -120,6 +146,9 @@ pg_result pg_replay_checkpoint(const uint8_t *data, const pg_replay_info *info, 
  * format 3 adds the joint commands (its header is format 2's). */
 pg_result pg_replay_upgrade(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
                             size_t *out_size, pg_replay_error *error);
+/** pg_replay_upgrade with a work area from the caller (pg_replay_read_in). */
+pg_result pg_replay_upgrade_in(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
+                               size_t *out_size, pg_replay_error *error, void *work, size_t work_size);
 
 /* ---- writer ------------------------------------------------------------------------- */
 /** A replay file being written into caller memory (pg_replay_writer_begin()). */
@@ -157,6 +186,9 @@ pg_result pg_replay_writer_finish(pg_replay_writer *w, uint64_t final_hash, size
 /* ---- player ------------------------------------------------------------------------- */
 /** Bytes of world memory the file's scene needs (pg_world_memory_size of its def). */
 pg_result pg_replay_world_memory_size(const pg_replay_info *info, size_t *size, pg_replay_error *error);
+/** pg_replay_world_memory_size with a work area from the caller (pg_replay_read_in). */
+pg_result pg_replay_world_memory_size_in(const pg_replay_info *info, size_t *size, pg_replay_error *error, void *work,
+                                         size_t work_size);
 
 /** A replay file being played (pg_replay_player_begin()). */
 typedef struct pg_replay_player {
@@ -190,6 +222,11 @@ typedef struct pg_replay_frame_result {
  * another numeric configuration PG_ERR_INCOMPATIBLE. */
 pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const pg_replay_info *info, void *memory,
                                  size_t memory_size, pg_replay_frame_result *first, pg_replay_error *error);
+/** pg_replay_player_begin with a work area from the caller (pg_replay_read_in); the
+ * player does not keep it: pg_replay_player_step needs none. */
+pg_result pg_replay_player_begin_in(pg_replay_player *p, const uint8_t *data, const pg_replay_info *info, void *memory,
+                                    size_t memory_size, pg_replay_frame_result *first, pg_replay_error *error,
+                                    void *work, size_t work_size);
 /** 1 when every frame has been played. */
 int pg_replay_player_done(const pg_replay_player *p);
 /** Apply the next frame's commands, step, compare the checkpoint that falls on the new

@@ -33,6 +33,11 @@
  *     pg_world_create(&def, memory, need, &world);
  *     if (pg_scene_load(world, text, length, &err) != PG_OK) ... // recreate the world
  *
+ *     // on a small stack: the same calls with a work area that lives elsewhere
+ *     static uint64_t work[PG_SCENE_WORK_BYTES / 8];
+ *     pg_scene_read_def_in(text, length, &def, &err, work, sizeof work);
+ *     pg_scene_load_in(world, text, length, &err, work, sizeof work);
+ *
  *     size_t n = pg_scene_write(world, NULL, 0);   // bytes needed, without the NUL
  *     ... a buffer of n + 1 bytes ...
  *     pg_scene_write(world, buffer, n + 1);
@@ -87,6 +92,16 @@ typedef struct pg_scene_error {
  * on success. */
 pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, pg_scene_error *error);
 
+/** An upper bound of pg_scene_work_size() on every target, for a work area declared at
+ * compile time (scene_file.c checks it when it compiles):
+ *     static uint64_t scene_work[PG_SCENE_WORK_BYTES / 8];  // aligned to 8 */
+#define PG_SCENE_WORK_BYTES 20480u
+
+/** Bytes of the work area the `_in` readers need: the parser, the shapes of the body
+ * being read and the work space of their mass check (about 18 KiB). The same for every
+ * text; at most PG_SCENE_WORK_BYTES. */
+size_t pg_scene_work_size(void);
+
 /** Create the scene's bodies in `world`, in file order (each takes the lowest free body
  * slot). The world must have been created from the def pg_scene_read_def gives for
  * this text: every setting except the capacities must be equal (else
@@ -101,6 +116,25 @@ pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, 
  * and the world keeps the bodies completed before that line; a partly built body is
  * destroyed.) */
 pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_scene_error *error);
+
+/** pg_scene_read_def and pg_scene_load with a work area from the caller: for small
+ * stacks (a microcontroller's). pg_scene_read_def and pg_scene_load put a work area of
+ * PG_SCENE_WORK_BYTES on their own stack and call these; with the work area elsewhere
+ * (a static buffer, the caller's heap), no frame on their path is larger than a few
+ * hundred bytes and the deepest call stays under 4 KiB on a 32-bit target
+ * (docs/embedded.md, "Stack"). Results, errors and messages are those of the plain calls.
+ *
+ * `work`: at least pg_scene_work_size() bytes, aligned to 8 (the alignment of uint64_t
+ * on the targets pogon supports), whose contents do not matter; it is overwritten, and
+ * nothing in it is needed after the call. A work area that is NULL, misaligned or too
+ * small is refused with PG_ERR_INVALID_ARGUMENT and a message naming the size needed
+ * (line and column 0), before anything else is written (NULL text, def or world are
+ * still PG_ERR_NULL, checked first). */
+pg_result pg_scene_read_def_in(const char *text, size_t length, pg_world_def *def, pg_scene_error *error, void *work,
+                               size_t work_size);
+/** pg_scene_load with a work area from the caller (pg_scene_read_def_in). */
+pg_result pg_scene_load_in(pg_world *world, const char *text, size_t length, pg_scene_error *error, void *work,
+                           size_t work_size);
 
 /** Write the world's settings (the def in force, capacities included) and every body
  * with its shapes in their current state: type, position (the body origin), angle,

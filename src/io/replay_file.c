@@ -3,9 +3,18 @@
  * against the size the caller gave. */
 #include "pogon/replay_file.h"
 #include "pogon/scene_file.h"
+#include "replay_file_internal.h"
 #include "numeric_config.h"
 #include "text.h"
 #include "world_internal.h" /* pg__fail: pg_replay_apply_frame's messages */
+
+/* A function whose frame must not be merged into its caller's (gcc inlines a static
+ * function called once): see check_file. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PG__OWN_FRAME static __attribute__((noinline))
+#else
+#define PG__OWN_FRAME static
+#endif
 
 /* ---- little-endian fields ------------------------------------------------------------ */
 static void put_u16(uint8_t *p, uint32_t v)
@@ -274,23 +283,52 @@ static size_t scene_error_offset(const pg_replay_info *info, const pg_scene_erro
     return pos;
 }
 
-/* Check the scene text with the scene parser; errors name the file offset. */
-static pg_result check_scene(const pg_replay_info *info, pg_world_def *def, pg_replay_error *e)
+/* ---- the work area ------------------------------------------------------------------------ */
+/* The replay part's size rounded up to 8, where the scene reader's work area starts. */
+#define REPLAY_OWN_BYTES ((sizeof(pg__replay_work) + 7u) & ~(size_t)7u)
+PG__STATIC_ASSERT(REPLAY_OWN_BYTES + PG_SCENE_WORK_BYTES <= PG_REPLAY_WORK_BYTES, replay_work_fits);
+
+size_t pg_replay_work_size(void) { return REPLAY_OWN_BYTES + pg_scene_work_size(); }
+
+pg__replay_work *pg__replay_work_in(void *work, size_t work_size, pg_replay_error *error)
 {
-    pg_scene_error se;
-    pg_result r = pg_scene_read_def(info->scene_text, info->scene_size, def, &se);
-    if (r != PG_OK) {
-        size_t off = scene_error_offset(info, &se);
-        msg m = set_error(e, info->scene_offset + off, "scene", "text", -1, -1, "scene text does not parse: ");
-        pg__text_put(&m, se.message);
-        return PG_ERR_INVALID_ARGUMENT;
-    }
-    return PG_OK;
+    const char *why = work == NULL ? "work is NULL" : ((uintptr_t)work & 7u) != 0 ? "work is not aligned to 8 bytes"
+                    : work_size < pg_replay_work_size() ? "work is too small" : NULL;
+    msg m;
+    if (why == NULL) return (pg__replay_work *)work;
+    m = set_error(error, 0, "work", "work_size", -1, -1, why);
+    pg__text_put(&m, ": the replay reader needs pg_replay_work_size() = ");
+    pg__text_u64(&m, pg_replay_work_size());
+    pg__text_put(&m, " bytes aligned to 8 (given ");
+    pg__text_u64(&m, work == NULL ? 0u : work_size);
+    pg__text_put(&m, ")");
+    return NULL;
+}
+
+/* The scene reader's part of the work area. */
+static void *scene_work(pg__replay_work *w) { return (uint8_t *)w + REPLAY_OWN_BYTES; }
+
+/* *e from the scene reader's error: "WHAT: its message" at its offset in the file. */
+PG__OWN_FRAME pg_result scene_error(const pg_replay_info *info, const pg_scene_error *se, pg_replay_error *e,
+                                    const char *what)
+{
+    size_t off = scene_error_offset(info, se);
+    msg m = set_error(e, info->scene_offset + off, "scene", "text", -1, -1, what);
+    pg__text_put(&m, se->message);
+    return PG_ERR_INVALID_ARGUMENT;
+}
+
+/* Check the scene text with the scene parser; errors name the file offset. */
+static pg_result check_scene(const pg_replay_info *info, pg_world_def *def, pg_replay_error *e, pg__replay_work *w)
+{
+    pg_result r = pg_scene_read_def_in(info->scene_text, info->scene_size, def, &w->scene_error, scene_work(w),
+                                       pg_scene_work_size());
+    return r != PG_OK ? scene_error(info, &w->scene_error, e, "scene text does not parse: ") : PG_OK;
 }
 
 /* PG_OK when `recorded` is this build's numeric configuration; otherwise
  * PG_ERR_INCOMPATIBLE and a message naming both. */
-static pg_result numeric_config_error(uint32_t recorded, pg_replay_error *e)
+PG__OWN_FRAME pg_result numeric_config_error(uint32_t recorded, pg_replay_error *e)
 {
     msg m;
     if (recorded == pg_numeric_config()) return PG_OK;
@@ -302,25 +340,24 @@ static pg_result numeric_config_error(uint32_t recorded, pg_replay_error *e)
     return PG_ERR_INCOMPATIBLE;
 }
 
-pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error)
+/* Everything pg_replay_read checks but the scene, into *in (the work area's): the header,
+ * the records and every hash. Its frame (commands decoded, counters) stays beside, not
+ * under, the scene reader's chain. */
+PG__OWN_FRAME pg_result check_file(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_info *in,
+                                   pg_replay_error *error)
 {
-    pg_replay_info in;
     size_t pos, block_start, scene_size, records_end, i;
     uint32_t n, sections, frame = 0, checkpoints = 0;
     uint64_t stored, computed;
-    pg_world_def def;
     pg_result r;
 
-    clear_error(error);
-    if (data == NULL && size != 0) return PG_ERR_NULL;
-    if (info == NULL) return PG_ERR_NULL;
     {
         uint8_t *z = (uint8_t *)info;
         for (i = 0; i < sizeof *info; ++i) z[i] = 0;
-        z = (uint8_t *)&in;
-        for (i = 0; i < sizeof in; ++i) z[i] = 0;
+        z = (uint8_t *)in;
+        for (i = 0; i < sizeof *in; ++i) z[i] = 0;
     }
-    in.size = size;
+    in->size = size;
 
     /* header */
     for (i = 0; i < 8; ++i) {
@@ -332,17 +369,17 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
         }
     }
     if (size < OFF_FORMAT + 2u) return truncated(error, size, "header", "format_version", -1, OFF_FORMAT + 2u);
-    in.format_version = get_u16(data + OFF_FORMAT);
-    info->format_version = in.format_version;
+    in->format_version = get_u16(data + OFF_FORMAT);
+    info->format_version = in->format_version;
     info->size = size;
-    if (in.format_version != PG_REPLAY_FORMAT_VERSION) {
+    if (in->format_version != PG_REPLAY_FORMAT_VERSION) {
         msg m = set_error(error, OFF_FORMAT, "header", "format_version", -1, -1, "format version ");
-        pg__text_u64(&m, in.format_version);
-        if (in.format_version == 0) {
+        pg__text_u64(&m, in->format_version);
+        if (in->format_version == 0) {
             pg__text_put(&m, " does not exist: the header is corrupt");
             return PG_ERR_INVALID_ARGUMENT;
         }
-        if (in.format_version < PG_REPLAY_FORMAT_VERSION) {
+        if (in->format_version < PG_REPLAY_FORMAT_VERSION) {
             pg__text_put(&m, " is older than this build's ");
             pg__text_u64(&m, PG_REPLAY_FORMAT_VERSION);
             pg__text_put(&m, ": convert it with `pogon-replay upgrade IN OUT` (pg_replay_upgrade)");
@@ -354,21 +391,21 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
         return PG_ERR_INCOMPATIBLE;
     }
     if (size < PG_REPLAY_HEADER_SIZE) return truncated(error, size, "header", "header", -1, PG_REPLAY_HEADER_SIZE);
-    in.engine_major = get_u16(data + OFF_ENGINE_MAJOR);
-    in.engine_minor = get_u16(data + OFF_ENGINE_MINOR);
-    in.engine_patch = get_u16(data + OFF_ENGINE_PATCH);
-    in.flags = get_u32(data + OFF_FLAGS);
-    in.numeric_config = get_u32(data + OFF_NUMERIC_CONFIG);
-    in.checkpoint_interval = get_u32(data + OFF_INTERVAL);
-    in.section_count = get_u32(data + OFF_SECTIONS);
-    if (in.flags != 0)
-        return value_error(error, OFF_FLAGS, "header", "flags", -1, "flags ", in.flags,
+    in->engine_major = get_u16(data + OFF_ENGINE_MAJOR);
+    in->engine_minor = get_u16(data + OFF_ENGINE_MINOR);
+    in->engine_patch = get_u16(data + OFF_ENGINE_PATCH);
+    in->flags = get_u32(data + OFF_FLAGS);
+    in->numeric_config = get_u32(data + OFF_NUMERIC_CONFIG);
+    in->checkpoint_interval = get_u32(data + OFF_INTERVAL);
+    in->section_count = get_u32(data + OFF_SECTIONS);
+    if (in->flags != 0)
+        return value_error(error, OFF_FLAGS, "header", "flags", -1, "flags ", in->flags,
                            " are not defined in this format version (must be 0)");
-    if (in.checkpoint_interval == 0)
+    if (in->checkpoint_interval == 0)
         return value_error(error, OFF_INTERVAL, "header", "checkpoint_interval", -1, "checkpoint interval ", 0,
                            " is invalid (must be at least 1)");
-    if (in.section_count == 0 || in.section_count > PG_REPLAY_MAX_SECTIONS)
-        return value_error(error, OFF_SECTIONS, "header", "section_count", -1, "section count ", in.section_count,
+    if (in->section_count == 0 || in->section_count > PG_REPLAY_MAX_SECTIONS)
+        return value_error(error, OFF_SECTIONS, "header", "section_count", -1, "section count ", in->section_count,
                            " is out of range 1..16");
     stored = get_u64(data + OFF_HEADER_HASH);
     computed = hash_range(data, 0, OFF_HEADER_HASH);
@@ -391,9 +428,9 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
         pg__text_put(&m, " bytes fit): the file is truncated or the size is corrupt");
         return PG_ERR_INVALID_ARGUMENT;
     }
-    in.scene_text = (const char *)(data + OFF_SCENE_TEXT);
-    in.scene_size = scene_size;
-    in.scene_offset = OFF_SCENE_TEXT;
+    in->scene_text = (const char *)(data + OFF_SCENE_TEXT);
+    in->scene_size = scene_size;
+    in->scene_offset = OFF_SCENE_TEXT;
     pos = OFF_SCENE_TEXT + scene_size;
     stored = get_u64(data + pos);
     computed = hash_range(data, OFF_SCENE_TEXT, pos);
@@ -409,13 +446,13 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
         return PG_ERR_INVALID_ARGUMENT;
     }
     pos += 8u;
-    in.records_offset = pos;
+    in->records_offset = pos;
     block_start = pos;
-    sections = in.section_count;
+    sections = in->section_count;
 
     /* records: C(0) F... C(N) F... ... E */
     for (;;) {
-        int due = frame % in.checkpoint_interval == 0u && checkpoints <= frame / in.checkpoint_interval;
+        int due = frame % in->checkpoint_interval == 0u && checkpoints <= frame / in->checkpoint_interval;
         uint8_t tag;
         if (pos >= records_end) {
             /* the end record must start exactly at records_end */
@@ -507,12 +544,12 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
                                                            : ")");
                     return PG_ERR_INVALID_ARGUMENT;
                 }
-                if ((unsigned)cmd.kind < PG_CMD_KIND_COUNT) in.kind_counts[cmd.kind]++;
+                if ((unsigned)cmd.kind < PG_CMD_KIND_COUNT) in->kind_counts[cmd.kind]++;
                 pos += used;
             }
         }
-        if (n > in.max_frame_commands) in.max_frame_commands = n;
-        in.command_count += n;
+        if (n > in->max_frame_commands) in->max_frame_commands = n;
+        in->command_count += n;
         frame++;
     }
     if (pos != records_end) {
@@ -543,18 +580,48 @@ pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info,
     computed = hash_range(data, 0, pos + 21);
     if (stored != computed)
         return hash_error(error, pos + 21, "file", "checksum", -1, "file checksum mismatch", stored, computed);
-    in.end_offset = pos;
-    in.frame_count = frame;
-    in.checkpoint_count = checkpoints;
-    in.final_hash = get_u64(data + pos + 5);
-    in.checksum = stored;
+    in->end_offset = pos;
+    in->frame_count = frame;
+    in->checkpoint_count = checkpoints;
+    in->final_hash = get_u64(data + pos + 5);
+    in->checksum = stored;
 
-    r = check_scene(&in, &def, error);
+    return PG_OK;
+}
+
+pg_result pg__replay_read(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error,
+                          pg__replay_work *w)
+{
+    pg_result r;
+    clear_error(error);
+    r = check_file(data, size, info, &w->info, error);
     if (r != PG_OK) return r;
-    *info = in;
+    /* check_scene, written out: one frame less above the scene reader */
+    r = pg_scene_read_def_in(w->info.scene_text, w->info.scene_size, &w->def, &w->scene_error, scene_work(w),
+                             pg_scene_work_size());
+    if (r != PG_OK) return scene_error(&w->info, &w->scene_error, error, "scene text does not parse: ");
+    *info = w->info;
     /* sound, but stepped with other numerics than this build's: playing it here could
      * only diverge, so say which switch differs instead */
-    return numeric_config_error(in.numeric_config, error);
+    return numeric_config_error(w->info.numeric_config, error);
+}
+
+pg_result pg_replay_read_in(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error, void *work,
+                            size_t work_size)
+{
+    pg__replay_work *w;
+    clear_error(error);
+    if (data == NULL && size != 0) return PG_ERR_NULL;
+    if (info == NULL) return PG_ERR_NULL;
+    w = pg__replay_work_in(work, work_size, error);
+    if (w == NULL) return PG_ERR_INVALID_ARGUMENT;
+    return pg__replay_read(data, size, info, error, w);
+}
+
+pg_result pg_replay_read(const uint8_t *data, size_t size, pg_replay_info *info, pg_replay_error *error)
+{
+    uint64_t work[PG_REPLAY_WORK_BYTES / 8u];
+    return pg_replay_read_in(data, size, info, error, work, sizeof work);
 }
 
 /* Offset of checkpoint `index` in a valid file (scans the records). */
@@ -636,16 +703,19 @@ int pg_replay_compare_checkpoint(const pg_world *world, const uint8_t *data, con
 }
 
 /* ---- player ------------------------------------------------------------------------------ */
-pg_result pg_replay_world_memory_size(const pg_replay_info *info, size_t *size, pg_replay_error *error)
+pg_result pg_replay_world_memory_size_in(const pg_replay_info *info, size_t *size, pg_replay_error *error, void *work,
+                                         size_t work_size)
 {
-    pg_world_def def;
+    pg__replay_work *w;
     pg_result r;
     if (info == NULL || size == NULL) return PG_ERR_NULL;
+    w = pg__replay_work_in(work, work_size, error);
+    if (w == NULL) return PG_ERR_INVALID_ARGUMENT;
     *size = 0;
     clear_error(error);
-    r = check_scene(info, &def, error);
+    r = check_scene(info, &w->def, error, w);
     if (r != PG_OK) return r;
-    *size = pg_world_memory_size(&def);
+    *size = pg_world_memory_size(&w->def);
     if (*size == 0) {
         set_error(error, info->scene_offset, "scene", "text", -1, -1, "the scene's world settings are invalid");
         return PG_ERR_INVALID_ARGUMENT;
@@ -653,13 +723,41 @@ pg_result pg_replay_world_memory_size(const pg_replay_info *info, size_t *size, 
     return PG_OK;
 }
 
-pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const pg_replay_info *info, void *memory,
-                                 size_t memory_size, pg_replay_frame_result *first, pg_replay_error *error)
+pg_result pg_replay_world_memory_size(const pg_replay_info *info, size_t *size, pg_replay_error *error)
 {
-    pg_world_def def;
-    pg_scene_error se;
+    uint64_t work[PG_REPLAY_WORK_BYTES / 8u];
+    return pg_replay_world_memory_size_in(info, size, error, work, sizeof work);
+}
+
+/* *e for a scene whose world cannot be created (pg_world_create's result r). */
+PG__OWN_FRAME pg_result world_error(const pg_replay_info *info, pg_result r, pg_replay_error *e)
+{
+    msg m = set_error(e, info->scene_offset, "scene", "text", -1, -1, "cannot create the scene's world: ");
+    pg__text_put(&m, pg_result_name(r));
+    return r == PG_ERR_MEMORY ? PG_ERR_MEMORY : PG_ERR_INVALID_ARGUMENT;
+}
+
+/* *first: the player's world against checkpoint 0, at p->cursor. */
+PG__OWN_FRAME void compare_first(const pg_replay_player *p, pg_replay_frame_result *first)
+{
+    uint8_t *z = (uint8_t *)first;
+    size_t i;
+    for (i = 0; i < sizeof *first; ++i) z[i] = 0;
+    first->checkpoint = 1;
+    first->checkpoint_index = 0;
+    first->match = compare_at(p->world, p->data, &p->info, p->cursor, &first->expected_hash, &first->actual_hash,
+                              &first->section_mismatch);
+}
+
+pg_result pg_replay_player_begin_in(pg_replay_player *p, const uint8_t *data, const pg_replay_info *info, void *memory,
+                                    size_t memory_size, pg_replay_frame_result *first, pg_replay_error *error, void *work,
+                                    size_t work_size)
+{
+    pg__replay_work *w;
     pg_result r;
     if (p == NULL || data == NULL || info == NULL || memory == NULL) return PG_ERR_NULL;
+    w = pg__replay_work_in(work, work_size, error);
+    if (w == NULL) return PG_ERR_INVALID_ARGUMENT;
     clear_error(error);
     p->data = data;
     p->info = *info;
@@ -670,36 +768,29 @@ pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const
     p->command_failures = 0;
     r = numeric_config_error(info->numeric_config, error);
     if (r != PG_OK) return r;
-    r = check_scene(info, &def, error);
+    r = check_scene(info, &w->def, error, w);
     if (r != PG_OK) return r;
-    r = pg_world_create(&def, memory, memory_size, &p->world);
+    r = pg_world_create(&w->def, memory, memory_size, &p->world);
     if (r != PG_OK) {
-        msg m = set_error(error, info->scene_offset, "scene", "text", -1, -1, "cannot create the scene's world: ");
-        pg__text_put(&m, pg_result_name(r));
         p->world = NULL;
-        return r == PG_ERR_MEMORY ? PG_ERR_MEMORY : PG_ERR_INVALID_ARGUMENT;
+        return world_error(info, r, error);
     }
-    r = pg_scene_load(p->world, info->scene_text, info->scene_size, &se);
+    r = pg_scene_load_in(p->world, info->scene_text, info->scene_size, &w->scene_error, scene_work(w), pg_scene_work_size());
     if (r != PG_OK) {
-        size_t off = scene_error_offset(info, &se);
-        msg m = set_error(error, info->scene_offset + off, "scene", "text", -1, -1, "scene does not load: ");
-        pg__text_put(&m, se.message);
         p->world = NULL;
-        return PG_ERR_INVALID_ARGUMENT;
+        return scene_error(info, &w->scene_error, error, "scene does not load: ");
     }
-    /* checkpoint 0 */
-    if (first != NULL) {
-        uint8_t *z = (uint8_t *)first;
-        size_t i;
-        for (i = 0; i < sizeof *first; ++i) z[i] = 0;
-        first->checkpoint = 1;
-        first->checkpoint_index = 0;
-        first->match = compare_at(p->world, data, info, p->cursor, &first->expected_hash, &first->actual_hash,
-                                  &first->section_mismatch);
-    }
+    if (first != NULL) compare_first(p, first);
     p->cursor += checkpoint_size(info->section_count);
     p->checkpoints_checked = 1;
     return PG_OK;
+}
+
+pg_result pg_replay_player_begin(pg_replay_player *p, const uint8_t *data, const pg_replay_info *info, void *memory,
+                                 size_t memory_size, pg_replay_frame_result *first, pg_replay_error *error)
+{
+    uint64_t work[PG_REPLAY_WORK_BYTES / 8u];
+    return pg_replay_player_begin_in(p, data, info, memory, memory_size, first, error, work, sizeof work);
 }
 
 int pg_replay_player_done(const pg_replay_player *p)

@@ -7,6 +7,7 @@
  * the file checksum are computed again. The old file's own hashes are checked first,
  * so damage is never sealed as a sound file. Integer-only, no allocation. */
 #include "pogon/replay_file.h"
+#include "replay_file_internal.h"
 #include "text.h"
 
 /* Format 1: the format 2 header without numeric_config (docs/formats.md keeps both);
@@ -108,11 +109,16 @@ static int v2_hashes_sound(const uint8_t *in, size_t size)
            pg_hash_bytes(PG_HASH_SEED, in, size - 8u) == get_u64(in + size - 8u);
 }
 
-pg_result pg_replay_upgrade(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
-                            size_t *out_size, pg_replay_error *error)
+/* The header part of pg_replay_upgrade: `out` holds the file in this build's format, with
+ * its size and the old file's format version in w (upgrade_size, upgrade_version); PG_OK,
+ * or the refusal (out_size as pg_replay_upgrade sets it). Its frame stays beside, not
+ * under, the reader's chain. */
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+static pg_result convert(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
+                         size_t *out_size, pg_replay_error *error, pg__replay_work *w)
 {
-    pg_replay_info info;
-    pg_replay_error inner;
     uint32_t version;
     size_t need, i;
     pg_result r;
@@ -145,15 +151,35 @@ pg_result pg_replay_upgrade(const uint8_t *data, size_t size, uint32_t numeric_c
         copy_bytes(out, data, size);
     }
     if (version < PG_REPLAY_FORMAT_VERSION) restamp_version(out, need);
+    w->upgrade_size = need;
+    w->upgrade_version = version;
+    return PG_OK;
+}
+
+pg_result pg_replay_upgrade_in(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
+                               size_t *out_size, pg_replay_error *error, void *work, size_t work_size)
+{
+    pg__replay_work *w = pg__replay_work_in(work, work_size, error);
+    pg_result r;
+    if (w == NULL) return PG_ERR_INVALID_ARGUMENT;
+    r = convert(data, size, numeric_config, out, capacity, out_size, error, w);
+    if (r != PG_OK) return r;
     /* the rest of the file (scene, records, block hashes), as the current reader sees it */
-    r = pg_replay_read(out, need, &info, &inner);
+    r = pg__replay_read(out, w->upgrade_size, &w->upgrade_info, &w->upgrade_error, w);
     if (r == PG_ERR_INVALID_ARGUMENT || r == PG_ERR_NULL) {
         if (error != NULL) {
-            *error = inner;
-            if (version == 1u && error->offset >= (size_t)V2_HEADER_SIZE) error->offset -= 4u; /* the old file's offset */
+            *error = w->upgrade_error;
+            if (w->upgrade_version == 1u && error->offset >= (size_t)V2_HEADER_SIZE) error->offset -= 4u; /* the old file's offset */
         }
         if (out_size != NULL) *out_size = 0;
         return r;
     }
     return PG_OK; /* PG_ERR_INCOMPATIBLE here is only another numeric configuration: the caller's stamp */
+}
+
+pg_result pg_replay_upgrade(const uint8_t *data, size_t size, uint32_t numeric_config, uint8_t *out, size_t capacity,
+                            size_t *out_size, pg_replay_error *error)
+{
+    uint64_t work[PG_REPLAY_WORK_BYTES / 8u];
+    return pg_replay_upgrade_in(data, size, numeric_config, out, capacity, out_size, error, work, sizeof work);
 }

@@ -25,6 +25,15 @@
 #include "text.h"
 #include "world_internal.h"
 
+/* A function whose frame must not be merged into its caller's (gcc inlines a static
+ * function called once): a line's locals stay out of `run`, which every pg_make_* call
+ * sits under (docs/embedded.md, "Stack"). */
+#if defined(__GNUC__) || defined(__clang__)
+#define PG__OWN_FRAME static __attribute__((noinline))
+#else
+#define PG__OWN_FRAME static
+#endif
+
 /* ---- small text helpers ------------------------------------------------------------------ */
 typedef struct text_out {
     char *buf;
@@ -229,9 +238,22 @@ typedef struct scene_parser {
     pg_body_id body_id;
 
     /* READ: the collision forms and densities of the shapes of the body being read, for
-     * the mass checks pg_shape_create makes as each shape is added (about 9 KB) */
+     * the mass checks pg_shape_create makes as each shape is added (about 9 KB), the
+     * list pg_compound_mass reads them from and its work space (what a world lends from
+     * its scratch; the reader has no world) */
     pg_geom mass_geoms[64];
     pg_fix mass_densities[64];
+    const pg_geom *mass_list[64];
+    uint64_t mass_work[PG__MASS_WORK_BYTES / 8u];
+
+    /* the one-line body being read (a ready-made kind, a concave polygon, a chain): its
+     * properties, points, a concave polygon's pieces and the reason a check refused it.
+     * The parser lives in the caller's work area, so these stay out of the frames that
+     * call down to pg_make_* (docs/embedded.md, "Stack"). */
+    props item;
+    pg_vec2 points[PG_CHAIN_MAX_POINTS > PG_CONCAVE_MAX_VERTICES ? PG_CHAIN_MAX_POINTS : PG_CONCAVE_MAX_VERTICES];
+    pg__decomposition pieces;
+    char why[144];
 
     /* READ for pg_scene_load: the free body and shape slots of the world, and where the
      * scene first needs more (over_kind 1: bodies, 2: shapes; 0: it fits) */
@@ -897,14 +919,12 @@ static pg_result count_objects(scene_parser *P, uint32_t bodies, uint32_t shapes
  * checks each step, so reading does too. */
 static const char *mass_problem(scene_parser *P, uint32_t n, const pg_geometry *g, pg_fix density, int rotates)
 {
-    const pg_geom *geoms[64];
-    uint64_t work[PG__MASS_WORK_BYTES / 8u]; /* no world to lend its scratch when reading */
     uint32_t i;
     if (n >= 64) return NULL; /* refused before: a body has at most 64 shapes */
     pg__shape_build_local(g, &P->mass_geoms[n]);
     P->mass_densities[n] = density;
-    for (i = 0; i <= n; ++i) geoms[i] = &P->mass_geoms[i];
-    return pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, (int)n + 1, work), rotates);
+    for (i = 0; i <= n; ++i) P->mass_list[i] = &P->mass_geoms[i];
+    return pg__mass_data_problem(pg_compound_mass(P->mass_list, P->mass_densities, (int)n + 1, P->mass_work), rotates);
 }
 
 /* "cannot make the <kind>: <why>" as PG_ERR_ENVELOPE at `column` of the current line. */
@@ -919,43 +939,43 @@ static pg_result fail_mass(scene_parser *P, uint32_t column, const char *kind, c
 }
 
 /* KIND SIZE... [properties] */
-static pg_result parse_make(scene_parser *P, int kind, token keyword)
+PG__OWN_FRAME pg_result parse_make(scene_parser *P, int kind, token keyword)
 {
     const make_info *mk = &make_table[kind];
     pg_fix size[2] = {0, 0};
     uint32_t size_column = 0;
-    props pr;
+    props *pr = &P->item;
     pg_geometry g[2];
     pg_result r;
     int i;
-    props_init(&pr, kind == 5 ? PG_BODY_STATIC : PG_BODY_DYNAMIC);
+    props_init(pr, kind == 5 ? PG_BODY_STATIC : PG_BODY_DYNAMIC);
     for (i = 0; i < mk->sizes; ++i) {
         uint32_t column = 0;
         r = read_fix(P, mk->size_names[i], NULL, &size[i], &column);
         if (r != PG_OK) return r;
         if (i == 0) size_column = column;
     }
-    r = read_props(P, CTX_BODY | CTX_TYPE | CTX_MATERIAL, &pr, mk->name);
+    r = read_props(P, CTX_BODY | CTX_TYPE | CTX_MATERIAL, pr, mk->name);
     if (r != PG_OK) return r;
-    if (kind == 5 && pr.bd.type != PG_BODY_STATIC) {
-        msg m = fail(P, PG_ERR_BODY_TYPE, pr.column[P_TYPE]);
+    if (kind == 5 && pr->bd.type != PG_BODY_STATIC) {
+        msg m = fail(P, PG_ERR_BODY_TYPE, pr->column[P_TYPE]);
         pg__text_put(&m, "a wall is always static");
         return P->result;
     }
-    pr.bd.angle = pr.angle;
-    r = check_body_props(P, &pr);
-    if (r == PG_OK) r = check_density(P, &pr, pr.bd.type, token_column(P, keyword));
+    pr->bd.angle = pr->angle;
+    r = check_body_props(P, pr);
+    if (r == PG_OK) r = check_density(P, pr, pr->bd.type, token_column(P, keyword));
     if (r != PG_OK) return r;
     r = make_geometry(kind, size, g);
     if (r != PG_OK) return fail_geometry(P, r, size_column, mk->name);
     for (i = 0; i < (int)mk->shapes; ++i) {
-        r = check_reach(P, &g[i], pr.bd.type, size_column, mk->name);
+        r = check_reach(P, &g[i], pr->bd.type, size_column, mk->name);
         if (r != PG_OK) return r;
     }
-    if (P->mode == MODE_READ && pr.bd.type == PG_BODY_DYNAMIC) { /* pg_make_* checks the whole body, then each shape as it adds it */
+    if (P->mode == MODE_READ && pr->bd.type == PG_BODY_DYNAMIC) { /* pg_make_* checks the whole body, then each shape as it adds it */
         uint32_t k;
         for (k = 0; k < mk->shapes; ++k) {
-            const char *why = mass_problem(P, k, &g[k], pr.sd.density, !pr.bd.fixed_rotation);
+            const char *why = mass_problem(P, k, &g[k], pr->sd.density, !pr->bd.fixed_rotation);
             if (why != NULL) return fail_mass(P, size_column, mk->name, why);
         }
     }
@@ -964,18 +984,18 @@ static pg_result parse_make(scene_parser *P, int kind, token keyword)
     {
         pg_body_id id;
         switch (kind) {
-        case 0: r = pg_make_ball(P->world, &pr.bd, &pr.sd, size[0], &id); break;
-        case 1: r = pg_make_capsule(P->world, &pr.bd, &pr.sd, size[0], size[1], &id); break;
-        case 2: r = pg_make_box(P->world, &pr.bd, &pr.sd, size[0], size[1], &id); break;
-        case 3: r = pg_make_triangle(P->world, &pr.bd, &pr.sd, size[0], &id); break;
-        case 4: r = pg_make_star(P->world, &pr.bd, &pr.sd, size[0], &id); break;
-        default: r = pg_make_wall(P->world, &pr.bd, &pr.sd, size[0], size[1], &id); break;
+        case 0: r = pg_make_ball(P->world, &pr->bd, &pr->sd, size[0], &id); break;
+        case 1: r = pg_make_capsule(P->world, &pr->bd, &pr->sd, size[0], size[1], &id); break;
+        case 2: r = pg_make_box(P->world, &pr->bd, &pr->sd, size[0], size[1], &id); break;
+        case 3: r = pg_make_triangle(P->world, &pr->bd, &pr->sd, size[0], &id); break;
+        case 4: r = pg_make_star(P->world, &pr->bd, &pr->sd, size[0], &id); break;
+        default: r = pg_make_wall(P->world, &pr->bd, &pr->sd, size[0], size[1], &id); break;
         }
         if (r != PG_OK) {
             P->result = r;
             return fail_world(P, "cannot make the body");
         }
-        apply_awake(P->world, id, pr.bd.awake);
+        apply_awake(P->world, id, pr->bd.awake);
     }
     return PG_OK;
 }
@@ -1015,90 +1035,98 @@ static pg_result fail_detail(scene_parser *P, pg_result r, uint32_t column, cons
     return P->result;
 }
 
+/* The concave polygon of n points in P->points, with the line's properties in P->item:
+ * its decomposition (into P->pieces), each piece within reach, and in READ the whole
+ * dynamic body's mass. */
+PG__OWN_FRAME pg_result check_concave_pieces(scene_parser *P, int32_t n, uint32_t column)
+{
+    const props *pr = &P->item;
+    const pg__decomposition *d = &P->pieces;
+    pg__text why = pg__text_in(P->why, sizeof P->why);
+    int32_t k;
+    pg_result r = pg__decompose(P->points, n, &P->pieces, &why);
+    if (r != PG_OK) return fail_detail(P, r, column, "concave polygon", P->why);
+    for (k = 0; k < d->count; ++k) {
+        pg_geometry g;
+        pg__piece_geometry(P->points, &d->pieces[k], &g);
+        r = check_reach(P, &g, pr->bd.type, column, "concave polygon");
+        if (r != PG_OK) return r;
+        pg__shape_build_local(&g, &P->mass_geoms[k]);
+        P->mass_densities[k] = pr->sd.density;
+    }
+    if (P->mode == MODE_READ && pr->bd.type == PG_BODY_DYNAMIC) {
+        const char *problem;
+        for (k = 0; k < d->count; ++k) P->mass_list[k] = &P->mass_geoms[k];
+        problem = pg__mass_data_problem(pg_compound_mass(P->mass_list, P->mass_densities, d->count, P->mass_work), !pr->bd.fixed_rotation);
+        if (problem != NULL) return fail_mass(P, column, "concave polygon", problem);
+    }
+    return PG_OK;
+}
+
 /* concave X1 Y1 X2 Y2 ... [properties]: a body of the polygon's convex pieces, as
  * pg_make_concave makes it (checked as it checks: the pieces, their reach, the whole
  * body's mass). */
-static pg_result parse_concave(scene_parser *P, token keyword)
+PG__OWN_FRAME pg_result parse_concave(scene_parser *P, token keyword)
 {
-    pg_vec2 v[PG_CONCAVE_MAX_VERTICES];
-    pg__decomposition d;
-    char buf[144];
-    pg__text why = pg__text_in(buf, sizeof buf);
-    int32_t n = 0, k;
+    pg_vec2 *v = P->points;
+    int32_t n = 0;
     uint32_t column = 0;
-    props pr;
+    props *pr = &P->item;
     pg_result r;
-    props_init(&pr, PG_BODY_DYNAMIC);
+    props_init(pr, PG_BODY_DYNAMIC);
     r = read_points(P, "concave polygon", v, PG_CONCAVE_MAX_VERTICES, &n, &column);
-    if (r == PG_OK) r = read_props(P, CTX_BODY | CTX_TYPE | CTX_MATERIAL, &pr, "concave");
+    if (r == PG_OK) r = read_props(P, CTX_BODY | CTX_TYPE | CTX_MATERIAL, pr, "concave");
     if (r != PG_OK) return r;
-    pr.bd.angle = pr.angle;
-    r = check_body_props(P, &pr);
-    if (r == PG_OK) r = check_density(P, &pr, pr.bd.type, token_column(P, keyword));
+    pr->bd.angle = pr->angle;
+    r = check_body_props(P, pr);
+    if (r == PG_OK) r = check_density(P, pr, pr->bd.type, token_column(P, keyword));
     if (r != PG_OK) return r;
-    r = pg__decompose(v, n, &d, &why);
-    if (r != PG_OK) return fail_detail(P, r, column, "concave polygon", buf);
-    for (k = 0; k < d.count; ++k) {
-        pg_geometry g;
-        pg__piece_geometry(v, &d.pieces[k], &g);
-        r = check_reach(P, &g, pr.bd.type, column, "concave polygon");
-        if (r != PG_OK) return r;
-        pg__shape_build_local(&g, &P->mass_geoms[k]);
-        P->mass_densities[k] = pr.sd.density;
-    }
-    if (P->mode == MODE_READ && pr.bd.type == PG_BODY_DYNAMIC) {
-        const pg_geom *geoms[PG_CONCAVE_MAX_PIECES];
-        uint64_t work[PG__MASS_WORK_BYTES / 8u]; /* no world to lend its scratch when reading */
-        const char *problem;
-        for (k = 0; k < d.count; ++k) geoms[k] = &P->mass_geoms[k];
-        problem = pg__mass_data_problem(pg_compound_mass(geoms, P->mass_densities, d.count, work), !pr.bd.fixed_rotation);
-        if (problem != NULL) return fail_mass(P, column, "concave polygon", problem);
-    }
-    r = count_objects(P, 1, (uint32_t)d.count);
+    r = check_concave_pieces(P, n, column);
+    if (r != PG_OK) return r;
+    r = count_objects(P, 1, (uint32_t)P->pieces.count);
     if (r != PG_OK || P->mode == MODE_READ) return r;
     {
         pg_body_id id;
-        r = pg_make_concave(P->world, &pr.bd, &pr.sd, v, n, &id);
+        r = pg_make_concave(P->world, &pr->bd, &pr->sd, v, n, &id);
         if (r != PG_OK) {
             P->result = r;
             return fail_world(P, "cannot make the body");
         }
-        apply_awake(P->world, id, pr.bd.awake);
+        apply_awake(P->world, id, pr->bd.awake);
     }
     return PG_OK;
 }
 
 /* chain X1 Y1 X2 Y2 ... [loop] [properties]: static terrain, as pg_make_chain makes it. */
-static pg_result parse_chain(scene_parser *P, token keyword)
+PG__OWN_FRAME pg_result parse_chain(scene_parser *P, token keyword)
 {
-    pg_vec2 v[PG_CHAIN_MAX_POINTS];
-    char buf[144];
-    pg__text why = pg__text_in(buf, sizeof buf);
+    pg_vec2 *v = P->points;
+    pg__text why = pg__text_in(P->why, sizeof P->why);
     int32_t n = 0, k;
     int loop = 0;
     uint32_t column = 0;
-    props pr;
+    props *pr = &P->item;
     pg_result r;
-    props_init(&pr, PG_BODY_STATIC);
+    props_init(pr, PG_BODY_STATIC);
     r = read_points(P, "chain", v, PG_CHAIN_MAX_POINTS, &n, &column);
     if (r != PG_OK) return r;
     if (token_is(P, peek_token(P), "loop")) {
         (void)next_token(P);
         loop = 1;
     }
-    r = read_props(P, CTX_BODY | CTX_TYPE | CTX_MATERIAL, &pr, "chain");
+    r = read_props(P, CTX_BODY | CTX_TYPE | CTX_MATERIAL, pr, "chain");
     if (r != PG_OK) return r;
-    if (pr.bd.type != PG_BODY_STATIC) {
-        msg m = fail(P, PG_ERR_BODY_TYPE, pr.column[P_TYPE]);
+    if (pr->bd.type != PG_BODY_STATIC) {
+        msg m = fail(P, PG_ERR_BODY_TYPE, pr->column[P_TYPE]);
         pg__text_put(&m, "a chain is always static");
         return P->result;
     }
-    pr.bd.angle = pr.angle;
-    r = check_body_props(P, &pr);
-    if (r == PG_OK) r = check_density(P, &pr, pr.bd.type, token_column(P, keyword));
+    pr->bd.angle = pr->angle;
+    r = check_body_props(P, pr);
+    if (r == PG_OK) r = check_density(P, pr, pr->bd.type, token_column(P, keyword));
     if (r != PG_OK) return r;
     r = pg__chain_problem(v, n, loop, &why);
-    if (r != PG_OK) return fail_detail(P, r, column, "chain", buf);
+    if (r != PG_OK) return fail_detail(P, r, column, "chain", P->why);
     for (k = 0; k < (loop ? n : n - 1); ++k) {
         pg_geometry g;
         pg__chain_segment(v, n, loop, k, &g);
@@ -1109,12 +1137,12 @@ static pg_result parse_chain(scene_parser *P, token keyword)
     if (r != PG_OK || P->mode == MODE_READ) return r;
     {
         pg_body_id id;
-        r = pg_make_chain(P->world, &pr.bd, &pr.sd, v, n, loop, &id);
+        r = pg_make_chain(P->world, &pr->bd, &pr->sd, v, n, loop, &id);
         if (r != PG_OK) {
             P->result = r;
             return fail_world(P, "cannot make the body");
         }
-        apply_awake(P->world, id, pr.bd.awake);
+        apply_awake(P->world, id, pr->bd.awake);
     }
     return PG_OK;
 }
@@ -1290,7 +1318,7 @@ static pg_result end_body(scene_parser *P)
 }
 
 /* ---- statements ------------------------------------------------------------------------------------------ */
-static pg_result parse_header(scene_parser *P)
+PG__OWN_FRAME pg_result parse_header(scene_parser *P)
 {
     token t = next_token(P), version;
     msg m;
@@ -1887,18 +1915,58 @@ static void finish_def(scene_parser *P)
     if ((P->settings_seen & ((uint64_t)1 << P_MAX_JOINTS)) == 0 && P->joints > P->def.max_joints) P->def.max_joints = P->joints > (1u << 24) ? 1u << 24 : P->joints;
 }
 
-pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, pg_scene_error *error)
+/* ---- the work area ---------------------------------------------------------------------- */
+/* The parser is the whole work area: the working sets above are what it holds. */
+PG__STATIC_ASSERT(sizeof(scene_parser) <= PG_SCENE_WORK_BYTES, scene_work_fits);
+
+size_t pg_scene_work_size(void) { return sizeof(scene_parser); }
+
+/* The parser in `work`, or NULL after an error naming what the work area lacks. Aligned
+ * to 8 bytes: the parser holds int64 values, and 8 is their alignment on every target
+ * pogon supports (AAPCS included). */
+static scene_parser *parser_in(void *work, size_t work_size, pg_scene_error *error)
 {
-    scene_parser P;
+    const char *why = work == NULL ? "work is NULL" : ((uintptr_t)work & 7u) != 0 ? "work is not aligned to 8 bytes"
+                    : work_size < sizeof(scene_parser) ? "work is too small" : NULL;
+    if (why != NULL) {
+        if (error != NULL) {
+            msg m;
+            error->line = 0;
+            error->column = 0;
+            m = pg__text_in(error->message, sizeof error->message);
+            pg__text_put(&m, why);
+            pg__text_put(&m, ": the scene reader needs pg_scene_work_size() = ");
+            pg__text_u64(&m, sizeof(scene_parser));
+            pg__text_put(&m, " bytes aligned to 8 (given ");
+            pg__text_u64(&m, work == NULL ? 0u : work_size);
+            pg__text_put(&m, ")");
+        }
+        return NULL;
+    }
+    return (scene_parser *)work;
+}
+
+pg_result pg_scene_read_def_in(const char *text, size_t length, pg_world_def *def, pg_scene_error *error, void *work,
+                               size_t work_size)
+{
+    scene_parser *P;
     pg_result r;
     if (text == NULL) return fail_null(error, "text");
     if (def == NULL) return fail_null(error, "def");
-    parser_init(&P, text, length, error, NULL);
-    r = run(&P);
+    P = parser_in(work, work_size, error);
+    if (P == NULL) return PG_ERR_INVALID_ARGUMENT;
+    parser_init(P, text, length, error, NULL);
+    r = run(P);
     if (r != PG_OK) return r;
-    finish_def(&P);
-    *def = P.def;
+    finish_def(P);
+    *def = P->def;
     return PG_OK;
+}
+
+pg_result pg_scene_read_def(const char *text, size_t length, pg_world_def *def, pg_scene_error *error)
+{
+    uint64_t work[PG_SCENE_WORK_BYTES / 8u];
+    return pg_scene_read_def_in(text, length, def, error, work, sizeof work);
 }
 
 /* The first setting (other than capacities) where the world differs from the scene. */
@@ -1946,55 +2014,75 @@ static pg_result check_joint_room(scene_parser *P, const pg_world *world)
     return PG_OK;
 }
 
-pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_scene_error *error)
+/* The READ pass of pg_scene_load, before it runs: the world's free slots are the room the
+ * scene has, so that the pass notes where the scene outgrows them. */
+static void begin_check(scene_parser *P, const pg_world *world, const char *text, size_t length, pg_scene_error *error)
 {
-    scene_parser P;
-    pg_world_def wd;
-    pg_result r;
-    int which;
-    if (world == NULL) return fail_null(error, "world");
-    if (text == NULL) return fail_null(error, "text");
-    parser_init(&P, text, length, error, NULL); /* check everything first */
-    wd = pg_world_get_def(world);
-    P.room_given = 1; /* and note where the scene outgrows the world's free slots */
-    P.room_bodies = wd.max_bodies - world->body_count;
-    P.room_shapes = wd.max_shapes - world->shape_count;
-    P.room_joints = wd.max_joints - world->joint_count;
-    r = run(&P);
-    if (r != PG_OK) return r;
-    which = differing_setting(&wd, &P.def);
+    parser_init(P, text, length, error, NULL);
+    P->room_given = 1;
+    P->room_bodies = world->def.max_bodies - world->body_count;
+    P->room_shapes = world->def.max_shapes - world->shape_count;
+    P->room_joints = world->def.max_joints - world->joint_count;
+}
+
+/* After a successful READ pass of pg_scene_load: the world's settings and its room. PG_OK
+ * when the LOAD pass can run; the world is not touched. */
+PG__OWN_FRAME pg_result check_world(scene_parser *P, const pg_world *world)
+{
+    const pg_world_def *wd = &world->def;
+    int which = differing_setting(wd, &P->def);
     if (which >= 0) {
         const uint64_t bit = (uint64_t)1 << which;
         msg m;
-        int given = (P.settings_seen & bit) != 0;
-        P.line = given ? P.setting_line[which] : 1u;
-        m = fail(&P, PG_ERR_INVALID_ARGUMENT, given ? P.setting_column[which] : 1u);
+        int given = (P->settings_seen & bit) != 0;
+        P->line = given ? P->setting_line[which] : 1u;
+        m = fail(P, PG_ERR_INVALID_ARGUMENT, given ? P->setting_column[which] : 1u);
         pg__text_put(&m, "the world's ");
         pg__text_put(&m, prop_name(which));
         pg__text_put(&m, given ? " differs from the scene's" : " differs from the default the scene uses");
         pg__text_put(&m, ": create the world from pg_scene_read_def's def");
-        return P.result;
+        return P->result;
     }
-    if (P.over_kind != 0) { /* no room: refused before anything is made */
+    if (P->over_kind != 0) { /* no room: refused before anything is made */
         msg m;
-        int bodies = P.over_kind == 1;
-        P.line = P.over_line;
-        m = fail(&P, PG_ERR_CAPACITY, 1);
+        int bodies = P->over_kind == 1;
+        P->line = P->over_line;
+        m = fail(P, PG_ERR_CAPACITY, 1);
         pg__text_put(&m, bodies ? "body " : "shape ");
-        pg__text_u64(&m, P.over_count);
+        pg__text_u64(&m, P->over_count);
         pg__text_put(&m, " of the scene does not fit: the world has ");
-        pg__text_u64(&m, bodies ? P.room_bodies : P.room_shapes);
+        pg__text_u64(&m, bodies ? P->room_bodies : P->room_shapes);
         pg__text_put(&m, bodies ? " free body slots of max_bodies " : " free shape slots of max_shapes ");
-        pg__text_u64(&m, bodies ? wd.max_bodies : wd.max_shapes);
+        pg__text_u64(&m, bodies ? wd->max_bodies : wd->max_shapes);
         pg__text_put(&m, ", the scene needs ");
-        pg__text_u64(&m, bodies ? P.bodies : P.shapes);
-        return P.result;
+        pg__text_u64(&m, bodies ? P->bodies : P->shapes);
+        return P->result;
     }
-    r = check_joint_room(&P, world);
+    return check_joint_room(P, world);
+}
+
+pg_result pg_scene_load_in(pg_world *world, const char *text, size_t length, pg_scene_error *error, void *work,
+                            size_t work_size)
+{
+    scene_parser *P;
+    pg_result r;
+    if (world == NULL) return fail_null(error, "world");
+    if (text == NULL) return fail_null(error, "text");
+    P = parser_in(work, work_size, error);
+    if (P == NULL) return PG_ERR_INVALID_ARGUMENT;
+    begin_check(P, world, text, length, error); /* check everything first: nothing is made on a refusal */
+    r = run(P);
+    if (r == PG_OK) r = check_world(P, world);
     if (r != PG_OK) return r;
-    parser_init(&P, text, length, error, world);
-    P.body_base = world->body_high;
-    return run(&P);
+    parser_init(P, text, length, error, world);
+    P->body_base = world->body_high;
+    return run(P);
+}
+
+pg_result pg_scene_load(pg_world *world, const char *text, size_t length, pg_scene_error *error)
+{
+    uint64_t work[PG_SCENE_WORK_BYTES / 8u];
+    return pg_scene_load_in(world, text, length, error, work, sizeof work);
 }
 
 /* ---- writer ----------------------------------------------------------------------------------------------- */

@@ -135,6 +135,10 @@ int probe_run_scene(const probe_scene *sc, uint32_t every)
     return ok;
 }
 
+/* The replay reader's work area, static: the firmware (ports/cortex-m) runs this code on
+ * a microcontroller's stack, which the `_in` calls keep under 4 KiB (docs/embedded.md). */
+static uint64_t replay_work[PG_REPLAY_WORK_BYTES / 8u];
+
 /* Like `pogon-replay verify`: frames, checkpoints, mismatches and the final hash, so a
  * target that diverges prints a different line. */
 int probe_verify_replay(const char *name, const uint8_t *data, size_t size)
@@ -148,10 +152,12 @@ int probe_verify_replay(const char *name, const uint8_t *data, size_t size)
     uint32_t mismatches = 0;
     uint64_t final_hash;
     int ok;
-    if (pg_replay_read(data, size, &info, &err) != PG_OK) goto unplayable;
-    if (pg_replay_world_memory_size(&info, &need, &err) != PG_OK) goto unplayable;
+    if (pg_replay_read_in(data, size, &info, &err, replay_work, sizeof replay_work) != PG_OK) goto unplayable;
+    if (pg_replay_world_memory_size_in(&info, &need, &err, replay_work, sizeof replay_work) != PG_OK) goto unplayable;
     memory = malloc(need);
-    if (memory == NULL || pg_replay_player_begin(&player, data, &info, memory, need, &fr, &err) != PG_OK) goto unplayable;
+    if (memory == NULL ||
+        pg_replay_player_begin_in(&player, data, &info, memory, need, &fr, &err, replay_work, sizeof replay_work) != PG_OK)
+        goto unplayable;
     if (!fr.match) ++mismatches;
     while (!pg_replay_player_done(&player)) {
         if (pg_replay_player_step(&player, &fr) != PG_OK) goto unplayable;

@@ -8,6 +8,7 @@ Usage (from anywhere; paths are relative to the repository):
   tools/size/size_table.py --update-limits             after a size change on purpose
   tools/size/size_table.py --one CONFIG [--cpu m4|m0plus]   one configuration's flash and
                                                        largest functions; writes nothing
+  tools/size/size_table.py --stack                     the stack report only (Cortex-M4)
 
 Builds the library with arm-none-eabi-gcc -mthumb -Os -ffunction-sections
 -fdata-sections -mgeneral-regs-only, newlib-nano, --gc-sections, PG_FAST_DIV64=0, for
@@ -20,7 +21,10 @@ registers) and Cortex-M0+, and measures:
   RAM     pg_world_memory_size on the target (world_memory.c under qemu-system-arm);
   stack   the deepest call chain below pg_world_step and below each public function,
           from gcc's -fcallgraph-info=su (frame sizes as in the .su files; library
-          helpers such as memset and __aeabi_uldivmod count as 0);
+          helpers such as memset and __aeabi_uldivmod count as 0); a call deeper than
+          4 KiB that has an `_in` form (the same call with its work area from the
+          caller, e.g. pg_scene_read_def_in) is listed with that form's depth;
+          --stack prints this report alone (Cortex-M4 objects only, nothing written);
   cost    instructions per pyramid step under qemu -icount shift=0 (step_count.c), and
           the calls of libgcc's 64-bit division helpers in those steps (step_count.c
           with count_divisions.S).
@@ -415,8 +419,38 @@ def measure_stack(build):
     sites = division_sites(out)
     reach = set(names.get(f, f) for f in seen)
     step_sites = sorted((n, c) for n, c in sites.items() if n in reach)
-    over = [(d[0], t) for d, t in per_public if d[0] > 4096]
+    # a call deeper than 4 KiB whose work area can come from the caller names its small-stack
+    # form (X_in, declared beside it), which the budget is for
+    depth_of = dict((t, d[0]) for d, t in per_public)
+    over = [(d[0], t) + ((t + "_in", depth_of[t + "_in"]) if t + "_in" in depth_of else ())
+            for d, t in per_public if d[0] > 4096]
     return step, per_public[:3] + per_core[:3], largest, short, sorted(dividers), step_sites, over, len(public)
+
+
+def over_text(entry):
+    """One call of the "deeper than 4 KiB" line; a wrapper names its small-stack form."""
+    if len(entry) > 2:
+        return "%s %d B (its work area on its own stack; `%s` takes it from the caller: %d B)" % (
+            entry[1], entry[0], entry[2], entry[3])
+    return "%s %d B" % (entry[1], entry[0])
+
+
+def report_stack(build, jobs):
+    """--stack: the Cortex-M4 objects only, and the stack report of every public call."""
+    out, _ = compile_all(build, "M4", jobs)
+    stack = measure_stack(build)
+    step, calls, largest, short, dividers, sites, over, n_public = stack
+    frames, edges, names, files = call_graph(out)
+    memo = {}
+    api = public_api()
+    print("stack pg_world_step %d: %s" % (step[0], short(step[1])))
+    for t in sorted((t for t in frames if ":" not in t and t in api and files.get(t) in FILE_FORMATS),
+                    key=lambda t: -deepest(t, frames, edges, memo)[0]):
+        d = deepest(t, frames, edges, memo)
+        print("stack %s %d: %s" % (t, d[0], short(d[1])))
+    print("deeper than 4 KiB (of %d public calls): %s" % (n_public, ", ".join(over_text(e) for e in over) or "none"))
+    print("largest frames: %s" % ", ".join("%s %d B" % (n, b) for b, n in largest))
+    return 0
 
 
 def division_sites(out):
@@ -576,7 +610,7 @@ def markdown(r, path):
             L.append("| %s | %d%s | %s |" % (chain[0], depth, "" if bounded else " (not bounded)", short(chain)))
         L.append("")
         L.append("Public calls (of %d declared in include/pogon/) deeper than 4 KiB: %s." % (
-            n_public, ", ".join("%s %d B" % (t, d) for d, t in over) if over else "none"))
+            n_public, ", ".join(over_text(e) for e in over) if over else "none"))
         L.append("")
         L.append("Largest frames: %s." % ", ".join("%s %d B" % (n, b) for b, n in largest))
         L.append("")
@@ -611,13 +645,19 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build", "size"), help="work directory")
     ap.add_argument("--check", action="store_true", help="flash only: fail above the limits")
     ap.add_argument("--update-limits", action="store_true", help="write today's flash as the limits")
+    ap.add_argument("--stack", action="store_true", help="the stack report only (Cortex-M4 objects; writes no results)")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--one", metavar="CONFIG", choices=CONFIGS,
                     help="measure only this configuration's flash and print its largest functions; writes nothing")
     ap.add_argument("--cpu", choices=("m4", "m0plus"), default="m4", help="the CPU of --one")
     args = ap.parse_args()
-    if args.one and (args.render or args.check or args.update_limits or args.results):
-        ap.error("--one measures and prints only: not with --render, --check, --update-limits or --results")
+    if args.one and (args.render or args.check or args.update_limits or args.results or args.stack):
+        ap.error("--one measures and prints only: not with --render, --check, --update-limits, --results or --stack")
+    if args.stack:
+        if shutil.which(CC) is None:
+            print("size_table: %s not found (scripts/setup-deps.sh cortex-m installs it): skipped" % CC)
+            return 77
+        return report_stack(os.path.abspath(args.build), args.jobs)
     if args.render:
         if not args.results:
             ap.error("--render needs --results FILE")
