@@ -145,6 +145,9 @@ typedef struct pg_world pg_world;
 #define PG_EFFECTS_ALL        0x7Fu     /**< every effect: the default */
 
 /* ---- world ---------------------------------------------------------------------------- */
+/** pg_world_def.max_contact_events: keep one begin and one end event per contact slot. */
+#define PG_EVENTS_AS_CONTACTS 0xFFFFFFFFu
+
 /** A world's settings and capacities. Start from pg_default_world_def() and change the
  * fields you need: a def that did not come from it is refused. */
 typedef struct pg_world_def {
@@ -174,6 +177,12 @@ typedef struct pg_world_def {
     uint32_t max_shapes;        /**< most shapes at once, default 2048 */
     uint32_t max_contacts;      /**< most contacts at once, default 4096 */
     uint32_t max_joints;        /**< most joints at once (pogon/joint.h), default 64 (0 .. 2^24) */
+    uint32_t max_contact_events; /**< begin events, and apart end events, kept per step
+                                   (pg_world_begin_events): default PG_EVENTS_AS_CONTACTS, as
+                                   many as max_contacts, so none is ever dropped; 0 .. 2^24 to
+                                   keep fewer, 0 for none (a program that does not read events
+                                   saves their memory). Events past it are counted in
+                                   stats.events_dropped; they never change the simulation */
     uint32_t pg__cookie;        /**< internal: set by pg_default_world_def(), which every def
                                    must start from; a def without it is refused */
 } pg_world_def;
@@ -236,6 +245,8 @@ typedef struct pg_world_stats {
                                     body and step). Results stay defined; a nonzero count says
                                     the scene left what the formats hold (mass ratios far
                                     past 1:1000, forces far past the envelope) */
+    uint32_t events_dropped;   /**< begin and end events not kept because max_contact_events
+                                    was reached, all time (saturates) */
 } pg_world_stats;
 /** The world's counts now. */
 pg_world_stats pg_world_get_stats(const pg_world *world);

@@ -16,14 +16,24 @@ static pg_contact_event make_event(const pg_world *world, const pg_contact *c)
     return e;
 }
 
+/* Appends to one of the two lists, or counts the event as dropped (saturating). */
+static void push(pg_world *world, pg_contact_event *events, uint32_t *count, const pg_contact *c)
+{
+    if (*count < pg__event_capacity(&world->def)) {
+        events[(*count)++] = make_event(world, c);
+    } else if (world->stats.events_dropped < UINT32_MAX) {
+        world->stats.events_dropped += 1u;
+    }
+}
+
 void pg__push_end_event(pg_world *world, const pg_contact *c)
 {
-    if (world->end_count < world->def.max_contacts) world->end_events[world->end_count++] = make_event(world, c);
+    push(world, world->end_events, &world->end_count, c);
 }
 
 void pg__push_begin_event(pg_world *world, const pg_contact *c)
 {
-    if (world->begin_count < world->def.max_contacts) world->begin_events[world->begin_count++] = make_event(world, c);
+    push(world, world->begin_events, &world->begin_count, c);
 }
 
 const pg_contact_event *pg_world_begin_events(const pg_world *world, uint32_t *count)

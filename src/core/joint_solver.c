@@ -13,6 +13,8 @@
 
 size_t pg__joint_scratch_bytes(uint32_t max_joints, uint32_t max_bodies)
 {
+    /* a world made without joints never prepares them (pg__solve: joint_count > 0) */
+    if (max_joints == 0) return 0;
     return sizeof(joint_change) * ((size_t)max_bodies + 1u) + sizeof(joint_constraint) * (size_t)max_joints;
 }
 

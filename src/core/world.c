@@ -4,6 +4,7 @@
 #include "contact.h"
 #include "def_cookie.h"
 #include "error.h"
+#include "events.h"
 #include "island.h"
 #include "solver.h"
 #include "world_types.h"
@@ -33,6 +34,7 @@ pg_world_def pg_default_world_def(void)
     d.max_shapes = 2048;
     d.max_contacts = 4096;
     d.max_joints = PG_CONFIG_JOINTS ? 64 : 0; /* a build without joints has no joint pool */
+    d.max_contact_events = PG_EVENTS_AS_CONTACTS;
     d.pg__cookie = PG__DEF_COOKIE;
     return d;
 }
@@ -52,6 +54,8 @@ static const char *check_def(const pg_world_def *d)
     if (d->max_contacts < 1 || d->max_contacts > PG_MAX_CAPACITY) return "max_contacts must be 1..2^24";
     if (d->max_joints > PG_MAX_CAPACITY) return "max_joints must be 0..2^24";
     if (!PG_CONFIG_JOINTS && d->max_joints > 0) return LEFT_OUT_JOINTS;
+    if (d->max_contact_events != PG_EVENTS_AS_CONTACTS && d->max_contact_events > PG_MAX_CAPACITY)
+        return "max_contact_events must be 0..2^24, or PG_EVENTS_AS_CONTACTS";
     if (d->contact_hertz <= 0 || d->contact_hertz > PG_FIX_C(1000)) return "contact_hertz must be in (0, 1000]";
     if (d->contact_damping_ratio < 0 || d->contact_damping_ratio > PG_FIX_C(1000)) return "contact_damping_ratio must be 0..1000";
     if (d->contact_push_max <= 0 || d->contact_push_max > PG_FIX_C(1000)) return "contact_push_max must be in (0, 1000] m/s";
@@ -99,8 +103,8 @@ static layout compute_layout(const pg_world_def *d)
                         max2(pg__solver_scratch_bytes(d), pg__body_mass_scratch_bytes())));
     PLACE(island, sizeof(uint32_t) * d->max_bodies);
     PLACE(start, sizeof(pg_step_start) * d->max_bodies);
-    PLACE(begin, sizeof(pg_contact_event) * d->max_contacts);
-    PLACE(end, sizeof(pg_contact_event) * d->max_contacts);
+    PLACE(begin, sizeof(pg_contact_event) * pg__event_capacity(d));
+    PLACE(end, sizeof(pg_contact_event) * pg__event_capacity(d));
 #undef PLACE
     l.total = at;
     return l;
@@ -221,7 +225,7 @@ pg_world_stats pg_world_get_stats(const pg_world *world)
     pg_world_stats s;
     uint32_t i;
     if (world == NULL) {
-        pg_world_stats zero = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+        pg_world_stats zero = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
         return zero;
     }
     s = world->stats;

@@ -111,6 +111,7 @@ enum { MODE_READ = 0, MODE_LOAD = 1 };
 /* Properties. A slot is what "given twice" is checked on (angle and angle_bits share one). */
 enum prop_id {
     P_STEP_HZ, P_SUBSTEPS, P_GRAVITY, P_EFFECTS, P_MAX_BODIES, P_MAX_SHAPES, P_MAX_CONTACTS, P_MAX_JOINTS,
+    P_MAX_CONTACT_EVENTS,
     P_CONTACT_HERTZ, P_CONTACT_DAMPING_RATIO, P_CONTACT_PUSH_MAX, P_RESTITUTION_THRESHOLD,
     P_MAX_LINEAR_SPEED, P_SLEEP_LINEAR_TOLERANCE, P_SLEEP_ANGULAR_TOLERANCE, P_TIME_TO_SLEEP,
     P_TYPE, P_POSITION, P_ANGLE, P_LINEAR_VELOCITY, P_ANGULAR_VELOCITY, P_LINEAR_DAMPING,
@@ -145,6 +146,7 @@ static const prop_info props_table[] = {
     {"max_shapes", P_MAX_SHAPES, P_MAX_SHAPES, CTX_SETTING},
     {"max_contacts", P_MAX_CONTACTS, P_MAX_CONTACTS, CTX_SETTING},
     {"max_joints", P_MAX_JOINTS, P_MAX_JOINTS, CTX_SETTING},
+    {"max_contact_events", P_MAX_CONTACT_EVENTS, P_MAX_CONTACT_EVENTS, CTX_SETTING},
     {"contact_hertz", P_CONTACT_HERTZ, P_CONTACT_HERTZ, CTX_SETTING},
     {"contact_damping_ratio", P_CONTACT_DAMPING_RATIO, P_CONTACT_DAMPING_RATIO, CTX_SETTING},
     {"contact_push_max", P_CONTACT_PUSH_MAX, P_CONTACT_PUSH_MAX, CTX_SETTING},
@@ -639,6 +641,7 @@ static pg_result read_setting(scene_parser *P, const prop_info *info)
     case P_MAX_SHAPES: return read_u32(P, n, 1, 1u << 24, &d->max_shapes);
     case P_MAX_CONTACTS: return read_u32(P, n, 1, 1u << 24, &d->max_contacts);
     case P_MAX_JOINTS: return read_u32(P, n, 0, 1u << 24, &d->max_joints);
+    case P_MAX_CONTACT_EVENTS: return read_u32(P, n, 0, 1u << 24, &d->max_contact_events);
     case P_CONTACT_HERTZ: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 1, "(0, 1000] Hz", &d->contact_hertz);
     case P_CONTACT_DAMPING_RATIO: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 0, "0..1000", &d->contact_damping_ratio);
     case P_CONTACT_PUSH_MAX: return read_fix_in(P, n, NULL, 0, PG_FIX_C(1000), 1, "(0, 1000] m/s", &d->contact_push_max);
@@ -2153,6 +2156,8 @@ static void write_settings(text_out *o, const pg_world_def *d)
     put_setting_u64(o, "max_shapes", d->max_shapes);
     put_setting_u64(o, "max_contacts", d->max_contacts);
     put_setting_u64(o, "max_joints", d->max_joints);
+    /* absent means the default (PG_EVENTS_AS_CONTACTS), which has no number of its own */
+    if (d->max_contact_events != PG_EVENTS_AS_CONTACTS) put_setting_u64(o, "max_contact_events", d->max_contact_events);
 }
 
 static void write_shape(text_out *o, const pg_shape *s)

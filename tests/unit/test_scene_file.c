@@ -303,6 +303,33 @@ static void test_round_trip_shipped(void **state)
     }
 }
 
+/* max_contact_events is written only when it is not the default, which has no number
+ * (PG_EVENTS_AS_CONTACTS), and reads back as written. */
+static void test_contact_events_setting(void **state)
+{
+    loaded a = load_string("pogon-scene 1\nmax_contact_events 3\nball 0.5 position 0 2\n");
+    loaded b = load_string("pogon-scene 1\nball 0.5 position 0 2\n");
+    size_t na, nb;
+    char *ta = write_text(a.w, &na), *tb = write_text(b.w, &nb);
+    pg_world_def def;
+    pg_scene_error err;
+    (void)state;
+    assert_non_null(strstr(ta, "max_contact_events 3\n"));
+    assert_null(strstr(tb, "max_contact_events"));
+    assert_int_equal(pg_scene_read_def(ta, na, &def, &err), PG_OK);
+    assert_int_equal(def.max_contact_events, 3);
+    assert_int_equal(pg_scene_read_def(tb, nb, &def, &err), PG_OK);
+    assert_int_equal(def.max_contact_events, PG_EVENTS_AS_CONTACTS);
+    /* the same world but for what it keeps of its events: the same state */
+    assert_true(pg_world_hash(a.w) == pg_world_hash(b.w));
+    assert_int_equal(pg_scene_read_def("pogon-scene 1\nmax_contact_events 16777217\n", 42, &def, &err), PG_ERR_ENVELOPE);
+    assert_non_null(strstr(err.message, "max_contact_events"));
+    free(ta);
+    free(tb);
+    free_loaded(&a);
+    free_loaded(&b);
+}
+
 static void test_round_trip_after_steps(void **state)
 {
     size_t i;
@@ -830,6 +857,7 @@ int main(void)
         cmocka_unit_test(test_pyramid_matches_tools_scene),
 #endif
         cmocka_unit_test(test_round_trip_shipped),
+        cmocka_unit_test(test_contact_events_setting),
         cmocka_unit_test(test_round_trip_after_steps),
         cmocka_unit_test(test_round_trip_edited_world),
         cmocka_unit_test(test_sleeping_body_round_trip),

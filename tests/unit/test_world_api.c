@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "pogon/pogon.h"
+#include "pogon/replay.h"
 #include "pg_test_world.h"
 
 #define Q32 4294967296.0
@@ -923,6 +924,96 @@ static void run_event_scene(int leave)
 }
 
 static void test_events_destroy(void **state) { (void)state; run_event_scene(0); }
+
+/* Five balls side by side land in the same step on one ground: five begin events in
+ * that step, and five end events when they are destroyed. Three worlds differ only in
+ * max_contact_events: as many as contacts (the default), 2, and 0. */
+#define EVENT_BALLS 5
+typedef struct event_world {
+    test_world t;
+    pg_body_id balls[EVENT_BALLS];
+    uint32_t begins, ends;
+} event_world;
+
+static void make_event_world(event_world *e, uint32_t max_events)
+{
+    pg_world_def d = pg_default_world_def();
+    pg_body_def bd = pg_default_body_def();
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id ground;
+    int i;
+    d.max_bodies = 8;
+    d.max_shapes = 8;
+    d.max_contacts = 16;
+    d.max_contact_events = max_events;
+    e->t = make_world_def(&d);
+    e->begins = e->ends = 0;
+    bd.position = pg_v2(0, -PG_FIX_HALF);
+    assert_int_equal(pg_make_wall(e->t.w, &bd, &sd, PG_FIX_C(20), PG_FIX_ONE, &ground), PG_OK);
+    for (i = 0; i < EVENT_BALLS; ++i) {
+        bd = dynamic_at(-4.0 + 2.0 * i, 2.0);
+        assert_int_equal(pg_make_ball(e->t.w, &bd, &sd, fx(0.25), &e->balls[i]), PG_OK);
+    }
+}
+
+static void count_events(event_world *e, uint32_t capacity)
+{
+    uint32_t n;
+    (void)pg_world_begin_events(e->t.w, &n);
+    assert_true(n <= capacity);
+    e->begins += n;
+    (void)pg_world_end_events(e->t.w, &n);
+    assert_true(n <= capacity);
+    e->ends += n;
+}
+
+static void test_events_capacity(void **state)
+{
+    static const uint32_t capacity[3] = {PG_EVENTS_AS_CONTACTS, 2, 0};
+    static const uint32_t kept[3] = {EVENT_BALLS, 2, 0};
+    event_world e[3];
+    pg_world_def d = pg_default_world_def();
+    size_t full, two, none;
+    int k, step, i;
+    (void)state;
+    d.max_bodies = 8;
+    d.max_shapes = 8;
+    d.max_contacts = 16;
+    full = pg_world_memory_size(&d);
+    d.max_contact_events = 2;
+    two = pg_world_memory_size(&d);
+    d.max_contact_events = 0;
+    none = pg_world_memory_size(&d);
+    /* one begin and one end list, each of the capacity's events */
+    assert_int_equal(full - two, 2 * sizeof(pg_contact_event) * (16 - 2));
+    assert_int_equal(full - none, 2 * sizeof(pg_contact_event) * 16);
+    d.max_contact_events = 1u << 24;
+    assert_null(pg_world_def_problem(&d));
+    d.max_contact_events = (1u << 24) + 1u;
+    assert_non_null(pg_world_def_problem(&d));
+    assert_non_null(strstr(pg_world_def_problem(&d), "max_contact_events"));
+    assert_int_equal(pg_world_memory_size(&d), 0);
+
+    for (k = 0; k < 3; ++k) make_event_world(&e[k], capacity[k]);
+    for (step = 0; step < 120; ++step) { /* 2 s: they land at about 0.6 s */
+        for (k = 0; k < 3; ++k) {
+            assert_int_equal(pg_world_step(e[k].t.w), PG_OK);
+            count_events(&e[k], kept[k]);
+        }
+        /* events are outputs: what a world keeps of them never changes its future */
+        assert_true(pg_world_hash(e[0].t.w) == pg_world_hash(e[1].t.w));
+        assert_true(pg_world_hash(e[0].t.w) == pg_world_hash(e[2].t.w));
+    }
+    for (k = 0; k < 3; ++k) {
+        PG_EXPECT_EQ(e[k].begins, kept[k], "begin events kept of %d landings", EVENT_BALLS);
+        PG_EXPECT_EQ(pg_world_get_stats(e[k].t.w).events_dropped, EVENT_BALLS - kept[k], "%s", "begin events dropped");
+        for (i = 0; i < EVENT_BALLS; ++i) assert_int_equal(pg_body_destroy(e[k].t.w, e[k].balls[i]), PG_OK);
+        count_events(&e[k], kept[k]);
+        PG_EXPECT_EQ(e[k].ends, kept[k], "end events kept of %d destructions", EVENT_BALLS);
+        PG_EXPECT_EQ(pg_world_get_stats(e[k].t.w).events_dropped, 2 * (EVENT_BALLS - kept[k]), "%s", "events dropped in all");
+        free_world(&e[k].t);
+    }
+}
 static void test_events_leave(void **state) { (void)state; run_event_scene(1); }
 
 /* ---- queries -------------------------------------------------------------------------------------- */
@@ -1367,6 +1458,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_result_names_and_messages),
         cmocka_unit_test(test_memory_size_of_invalid_defs),
+        cmocka_unit_test(test_events_capacity),
         cmocka_unit_test(test_def_problem_names_the_field),
         cmocka_unit_test(test_defs_not_from_their_defaults_are_refused),
         cmocka_unit_test(test_world_create_errors),

@@ -331,10 +331,12 @@ def measure_memory(build):
     sizes, parts = {}, {}
     for line in qemu("M4", elf).splitlines():
         p = line.split()
-        if p and p[0] == "memory":
-            sizes[tuple(int(x) for x in p[1:4])] = int(p[4])
-        elif p and p[0] == "part":
-            parts.setdefault(tuple(int(x) for x in p[1:4]), {})[" ".join(p[5:])] = int(p[4])
+        # "-lean": the world made with max_joints 0 and max_contact_events 0 (key ends "lean")
+        lean = ("lean",) if p and p[0].endswith("-lean") else ()
+        if p and p[0] in ("memory", "memory-lean"):
+            sizes[tuple(int(x) for x in p[1:4]) + lean] = int(p[4])
+        elif p and p[0] in ("part", "part-lean"):
+            parts.setdefault(tuple(int(x) for x in p[1:4]) + lean, {})[" ".join(p[5:])] = int(p[4])
     return sizes, parts
 
 
@@ -575,7 +577,7 @@ def markdown(r, path):
         memory, parts = memory
         base = (1024, 1024, 4096)
         more = {"body": (1032, 1024, 4096), "shape": (1024, 1032, 4096), "contact": (1024, 1024, 4104)}
-        pyr = [k for k in memory if k != (32, 32, 128) and k != base and k not in more.values()]
+        pyr = [k for k in memory if len(k) == 3 and k != (32, 32, 128) and k != base and k not in more.values()]
         L.append("RAM (`pg_world_memory_size` on the Cortex-M4, 32-bit pointers):")
         L.append("")
         L.append("| world | bytes |")
@@ -598,6 +600,12 @@ def markdown(r, path):
             L.append("| %s | %s | %g | %s |" % (kind, slot_budget[kind], total,
                                               ", ".join("%s %g" % (n, b) for b, n in reversed(split))))
         L.append("")
+        lean = lambda k: k + ("lean",)
+        if lean(base) in memory and all(lean(k) in memory for k in more.values()):
+            per = lambda kind: (memory[lean(more[kind])] - memory[lean(base)]) / 8.0
+            L.append("The same in a world made with `max_joints` 0 and `max_contact_events` 0 (a program without "
+                     "joints that reads no events): body %g bytes, shape %g, contact %g." % (per("body"), per("shape"), per("contact")))
+            L.append("")
     if stack:
         step, public, largest, short, dividers, step_sites, over, n_public = stack
         L.append("Stack (Cortex-M4 -Os, deepest call chain from the .su frame sizes; library helpers count 0): "

@@ -10,7 +10,9 @@
 #include "world_internal.h"
 #include <stdio.h>
 
-static void print_size(uint32_t bodies, uint32_t shapes, uint32_t contacts)
+/* lean: a world made with max_joints 0 and max_contact_events 0 (lines "memory-lean",
+ * "part-lean"), what a program without joints that reads no events asks for */
+static void print_size_of(uint32_t bodies, uint32_t shapes, uint32_t contacts, int lean)
 {
     pg_world_def wd = pg_default_world_def();
     const char *name;
@@ -19,12 +21,15 @@ static void print_size(uint32_t bodies, uint32_t shapes, uint32_t contacts)
     wd.max_bodies = bodies;
     wd.max_shapes = shapes;
     wd.max_contacts = contacts;
-    printf("memory %lu %lu %lu %lu\n", (unsigned long)bodies, (unsigned long)shapes, (unsigned long)contacts,
-           (unsigned long)pg_world_memory_size(&wd));
+    if (lean) wd.max_joints = wd.max_contact_events = 0;
+    printf("memory%s %lu %lu %lu %lu\n", lean ? "-lean" : "", (unsigned long)bodies, (unsigned long)shapes,
+           (unsigned long)contacts, (unsigned long)pg_world_memory_size(&wd));
     for (i = 0; (name = pg__world_memory_part(&wd, i, &bytes)) != NULL; ++i)
-        printf("part %lu %lu %lu %lu %s\n", (unsigned long)bodies, (unsigned long)shapes, (unsigned long)contacts,
-               (unsigned long)bytes, name);
+        printf("part%s %lu %lu %lu %lu %s\n", lean ? "-lean" : "", (unsigned long)bodies, (unsigned long)shapes,
+               (unsigned long)contacts, (unsigned long)bytes, name);
 }
+
+static void print_size(uint32_t bodies, uint32_t shapes, uint32_t contacts) { print_size_of(bodies, shapes, contacts, 0); }
 
 int main(void)
 {
@@ -35,5 +40,8 @@ int main(void)
     print_size(1024, 1032, 4096);
     print_size(1024, 1024, 4104);
     print_size(pyramid.max_bodies, pyramid.max_shapes, pyramid.max_contacts);
+    print_size_of(1024, 1024, 4096, 1);
+    print_size_of(1032, 1024, 4096, 1);
+    print_size_of(1024, 1024, 4104, 1);
     return 0;
 }
