@@ -213,6 +213,13 @@ static mass_lists *lists_of(const pg_world *world) { return (mass_lists *)world-
 
 void *pg__body_mass_work(const pg_world *world) { return (unsigned char *)world->solver_scratch + MASS_LISTS_BYTES; }
 
+void pg__body_mass_lists(const pg_world *world, const pg_geom ***geoms, pg_fix **densities)
+{
+    mass_lists *l = lists_of(world);
+    *geoms = l->geoms;
+    *densities = l->densities;
+}
+
 const char *pg__body_mass_problem(const pg_world *world, uint32_t body_index, pg_fix density, uint32_t skip,
                                   const pg_geom *extra, pg_fix extra_density, int rotates)
 {

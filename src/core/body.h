@@ -15,6 +15,10 @@ void pg__body_update_mass(pg_world *world, uint32_t body_index);
 size_t pg__body_mass_scratch_bytes(void);
 /* That work space for pg_compound_mass, in the world's scratch: valid between steps only */
 void *pg__body_mass_work(const pg_world *world);
+/* The list of up to 65 geometries and densities for pg_compound_mass, in the world's
+ * scratch before the work space, for a caller that builds a compound of its own (a
+ * concave body's pieces): valid between steps only */
+void pg__body_mass_lists(const pg_world *world, const pg_geom ***geoms, pg_fix **densities);
 /* inv_mass and inv_inertia from mass, inertia, type and fixed rotation: the one rule, for
  * pg__body_update_mass and for restoring a snapshot (which stores only mass and inertia) */
 void pg__body_set_inverse_mass(pg_body *b);

@@ -1,6 +1,7 @@
 /* concave.c — concave polygons: pg_geometry_decompose (the pieces, for the caller) and
  * pg_make_concave (a body of them). The geometry is decompose.c's; this file checks
  * everything a body needs before it makes one, so a failing call changes nothing. */
+#include "concave.h"
 #include "body.h"
 #include "decompose.h"
 #include "error.h"
@@ -39,6 +40,28 @@ pg_result pg_geometry_decompose(const pg_vec2 *vertices, int32_t count, pg_geome
     return PG_OK;
 }
 
+/* pg_make_concave's working set (a decomposition is over 500 bytes), kept off the stack
+ * (the budget of docs/embedded.md, Stack, when a scene reader makes the body): in the
+ * world's scratch, free between steps, after the mass scratch, because the pieces are
+ * attached after pg_compound_mass has checked their mass in its work space. */
+typedef struct concave_work {
+    pg__decomposition decomposition;
+    char message[144];
+} concave_work;
+
+static size_t concave_work_offset(void) { return (pg__body_mass_scratch_bytes() + 7u) & ~(size_t)7u; }
+
+size_t pg__concave_scratch_bytes(void)
+{
+    if (!PG_SHAPES_KEPT(PG_SHAPES_POLYGON)) return pg__body_mass_scratch_bytes(); /* no concave bodies */
+    return concave_work_offset() + sizeof(concave_work);
+}
+
+static concave_work *concave_work_of(const pg_world *w)
+{
+    return (concave_work *)(void *)((unsigned char *)w->solver_scratch + concave_work_offset());
+}
+
 /* The largest |x| or |y| of the vertices, as pg__geometry_reach measures a shape. */
 static pg_fix vertices_reach(const pg_vec2 *v, int32_t n)
 {
@@ -55,13 +78,14 @@ static pg_fix vertices_reach(const pg_vec2 *v, int32_t n)
 /* Why a dynamic body of these pieces would leave the mass formats, or NULL. The pieces'
  * collision forms are built in the free shape slots they are about to take: an unused
  * slot's contents are not state (neither hashed nor saved), and 62 forms on the stack
- * would be 9 KB. */
+ * would be 9 KB. Their list is the world's mass list (body.h), which has room for 65. */
 static const char *mass_problem(pg_world *w, const pg_vec2 *v, const pg__decomposition *d, pg_fix density, int rotates)
 {
-    const pg_geom *geoms[PG_CONCAVE_MAX_PIECES];
-    pg_fix densities[PG_CONCAVE_MAX_PIECES];
+    const pg_geom **geoms;
+    pg_fix *densities;
     uint32_t slot = 0;
     int32_t k;
+    pg__body_mass_lists(w, &geoms, &densities);
     for (k = 0; k < d->count; ++k, ++slot) {
         pg_geometry g;
         while (w->shapes[slot].used) ++slot; /* the caller counted enough free slots */
@@ -76,9 +100,9 @@ static const char *mass_problem(pg_world *w, const pg_vec2 *v, const pg__decompo
 pg_result pg_make_concave(pg_world *w, const pg_body_def *bd, const pg_shape_def *sd, const pg_vec2 *vertices, int32_t count,
                           pg_body_id *out)
 {
-    pg__decomposition d;
-    char buf[144];
-    pg__text why = pg__text_in(buf, sizeof buf);
+    concave_work *work;
+    const pg__decomposition *d;
+    pg__text why;
     pg_body_id id;
     pg_result r;
     int32_t k;
@@ -89,26 +113,29 @@ pg_result pg_make_concave(pg_world *w, const pg_body_def *bd, const pg_shape_def
     out->index = 0;
     out->generation = 0;
     if (!PG_SHAPES_KEPT(PG_SHAPES_POLYGON)) return pg__fail(w, PG_ERR_INVALID_ARGUMENT, PG__LEFT_OUT_KIND("pg_make_concave"));
+    work = concave_work_of(w);
+    d = &work->decomposition;
+    why = pg__text_in(work->message, sizeof work->message);
     pg__text_put(&why, "pg_make_concave: ");
-    r = pg__decompose(vertices, count, &d, &why);
-    if (r != PG_OK) return pg__fail(w, r, buf);
+    r = pg__decompose(vertices, count, &work->decomposition, &why);
+    if (r != PG_OK) return pg__fail(w, r, work->message);
     r = pg__check_shape_def(w, bd->type, sd);
     if (r != PG_OK) return r;
     if (vertices_reach(vertices, count) > pg__body_reach_limit(bd->type)) return pg__fail_reach(w, vertices_reach(vertices, count), bd->type);
     if (w->body_count >= w->def.max_bodies) return pg__fail(w, PG_ERR_CAPACITY, "max_bodies reached");
-    if (w->shape_count + (uint32_t)d.count > w->def.max_shapes) return pg__fail(w, PG_ERR_CAPACITY, "max_shapes reached");
+    if (w->shape_count + (uint32_t)d->count > w->def.max_shapes) return pg__fail(w, PG_ERR_CAPACITY, "max_shapes reached");
     if (bd->type == PG_BODY_DYNAMIC) {
-        const char *problem = mass_problem(w, vertices, &d, sd->density, !bd->fixed_rotation);
+        const char *problem = mass_problem(w, vertices, d, sd->density, !bd->fixed_rotation);
         if (problem != NULL) return pg__fail(w, PG_ERR_ENVELOPE, problem);
     }
     /* everything is checked; pg_body_create checks its def before it changes anything */
     r = pg_body_create(w, bd, &id);
     if (r != PG_OK) return r;
-    for (k = 0; k < d.count; ++k) {
+    for (k = 0; k < d->count; ++k) {
         pg_geometry g;
         uint32_t slot = 0;
         while (w->shapes[slot].used) ++slot;
-        pg__piece_geometry(vertices, &d.pieces[k], &g);
+        pg__piece_geometry(vertices, &d->pieces[k], &g);
         pg__shape_attach(w, id.index, slot, sd, &g);
     }
     pg__body_update_mass(w, id.index);

@@ -1,6 +1,7 @@
 /* world.c — world creation inside caller memory, settings, and the step: the
  * orchestrator on top of the stages it runs (docs/architecture.md). */
 #include "body.h"
+#include "concave.h"
 #include "contact.h"
 #include "def_cookie.h"
 #include "error.h"
@@ -97,10 +98,10 @@ static layout compute_layout(const pg_world_def *d)
     /* One scratch area for the stages that never hold it at the same time: the
      * broadphase (its output is the pairs above), then the next step's contact list
      * (contact.c, copied into the contacts above), then the solver and after it the
-     * islands, and between steps the mass of a body being changed (body.h) or the check
-     * of a snapshot being restored. */
+     * islands, and between steps the mass of a body being changed (body.h), a concave
+     * body's decomposition (concave.h) or the check of a snapshot being restored. */
     PLACE(scratch, max2(max2(pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity), sizeof(pg_contact) * d->max_contacts),
-                        max2(pg__solver_scratch_bytes(d), pg__body_mass_scratch_bytes())));
+                        max2(pg__solver_scratch_bytes(d), max2(pg__body_mass_scratch_bytes(), pg__concave_scratch_bytes()))));
     PLACE(island, sizeof(uint32_t) * d->max_bodies);
     PLACE(start, sizeof(pg_step_start) * d->max_bodies);
     PLACE(begin, sizeof(pg_contact_event) * pg__event_capacity(d));

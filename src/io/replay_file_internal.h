@@ -1,9 +1,9 @@
 /* replay_file_internal.h — what replay_file.c shares with replay_upgrade.c: the work
  * area of the replay calls that read a scene (pg_replay_work_size, pogon/replay_file.h).
  *
- * These calls sit above the scene reader's deepest chain (a concave polygon made into a
- * world: pg_make_concave and its mass), so what they keep lives in the caller's work
- * area, not in their frames (docs/embedded.md, "Stack"). */
+ * These calls sit above the scene reader's deepest chain (a body made in a world, by
+ * pg_shape_create or pg_make_concave, and its mass), so what they keep lives in the
+ * caller's work area, not in their frames (docs/embedded.md, "Stack"). */
 #ifndef POGON_SRC_REPLAY_FILE_INTERNAL_H
 #define POGON_SRC_REPLAY_FILE_INTERNAL_H
 #include "pogon/replay_file.h"

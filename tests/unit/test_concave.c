@@ -14,6 +14,9 @@
 #include "pg_test_world.h"
 
 #include "pogon/replay.h"
+#include "body.h"
+#include "concave.h"
+#include "decompose.h"
 
 typedef long double ld;
 
@@ -342,6 +345,57 @@ static void test_failing_make_changes_nothing(void **state)
     free_world(&t);
 }
 
+/* pg_make_concave works in the world's scratch (src/core/concave.c): in the smallest
+ * worlds (one body, one contact, no joints), whose scratch is sized by the mass work and
+ * the decomposition alone, the scratch holds the working set, the body is the same bit
+ * for bit as in a default world, and a refusal names the edges at fault as there. */
+static void test_smallest_world_makes_the_same_body(void **state)
+{
+    test_world big, small;
+    pg_world_def wd = pg_default_world_def();
+    pg_body_def bd = dynamic_at(1, 2);
+    pg_shape_def sd = pg_default_shape_def();
+    pg_body_id a, b;
+    pg_vec2 v[PG_CONCAVE_MAX_VERTICES], ca, cb;
+    int32_t n = make_star(v, 64, 3.0, 1.5);
+    (void)state;
+    sd.density = fx(2.5);
+    big = make_world_def(&wd);
+    wd.max_bodies = 1;
+    wd.max_contacts = 1;
+    wd.max_joints = 0;
+    wd.max_shapes = PG_CONCAVE_MAX_PIECES;
+    small = make_world_def(&wd);
+    /* the working set follows the mass scratch in the world's scratch */
+    assert_true(pg__concave_scratch_bytes() >= pg__body_mass_scratch_bytes() + sizeof(pg__decomposition));
+    assert_true(small.w->solver_scratch_bytes >= pg__concave_scratch_bytes());
+    if (pg_make_concave(big.w, &bd, &sd, v, n, &a) != PG_OK) fail_msg("%s", pg_world_last_error(big.w));
+    if (pg_make_concave(small.w, &bd, &sd, v, n, &b) != PG_OK) fail_msg("%s", pg_world_last_error(small.w));
+    assert_int_equal(pg_world_get_stats(big.w).shape_count, pg_world_get_stats(small.w).shape_count);
+    assert_true(pg_body_mass(big.w, a) == pg_body_mass(small.w, b));
+    assert_true(pg_body_inertia(big.w, a) == pg_body_inertia(small.w, b));
+    ca = pg_body_world_center(big.w, a);
+    cb = pg_body_world_center(small.w, b);
+    assert_int_equal(ca.x, cb.x);
+    assert_int_equal(ca.y, cb.y);
+    free_world(&small);
+    wd.max_shapes = 1;
+    small = make_world_def(&wd);
+    assert_true(small.w->solver_scratch_bytes >= pg__concave_scratch_bytes());
+    n = make_bowl(v);
+    {
+        pg_vec2 s = v[1]; /* the swap crosses two edges */
+        v[1] = v[2];
+        v[2] = s;
+    }
+    assert_int_equal(pg_make_concave(small.w, &bd, &sd, v, n, &b), PG_ERR_INVALID_ARGUMENT);
+    assert_int_equal(pg_make_concave(big.w, &bd, &sd, v, n, &a), PG_ERR_INVALID_ARGUMENT);
+    assert_non_null(strstr(pg_world_last_error(small.w), "pg_make_concave: edges 0 (vertex 0 to 1) and 2 (vertex 2 to 3) cross"));
+    assert_string_equal(pg_world_last_error(small.w), pg_world_last_error(big.w));
+    free_world(&small);
+    free_world(&big);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -351,6 +405,7 @@ int main(void)
         cmocka_unit_test(test_refusals),
         cmocka_unit_test(test_body_mass_is_the_polygons),
         cmocka_unit_test(test_failing_make_changes_nothing),
+        cmocka_unit_test(test_smallest_world_makes_the_same_body),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
