@@ -601,10 +601,11 @@ def markdown(r, path):
                                               ", ".join("%s %g" % (n, b) for b, n in reversed(split))))
         L.append("")
         lean = lambda k: k + ("lean",)
-        if lean(base) in memory and all(lean(k) in memory for k in more.values()):
+        if all(lean(k) in memory for k in (base, more["body"], more["contact"])):
             per = lambda kind: (memory[lean(more[kind])] - memory[lean(base)]) / 8.0
             L.append("The same in a world made with `max_joints` 0 and `max_contact_events` 0 (a program without "
-                     "joints that reads no events): body %g bytes, shape %g, contact %g." % (per("body"), per("shape"), per("contact")))
+                     "joints that reads no events): body %g bytes, contact %g (a shape slot does not change)."
+                     % (per("body"), per("contact")))
             L.append("")
     if stack:
         step, public, largest, short, dividers, step_sites, over, n_public = stack
