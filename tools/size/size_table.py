@@ -713,6 +713,16 @@ def main():
                 "%d B" % (BUDGETS[key[0]] * 1024) if BUDGETS[key[0]] else "none"))
             if size > allowed:
                 status = 1
+        # the stack budgets, met: 2 KiB in pg_world_step, 4 KiB in every public call (a plain
+        # reader that puts its work area on its own stack counts by its _in form)
+        step, _, _, short, _, _, over, _ = measure_stack(build)
+        too_deep = [e for e in over if len(e) <= 2 or e[3] > 4096]
+        step_ok = step[2] and step[0] <= 2048
+        print("%s: stack pg_world_step %d B (budget 2048 B): %s" % ("ok" if step_ok else "FAIL", step[0], short(step[1])))
+        print("%s: public calls deeper than 4 KiB without a small-stack form: %s" % (
+            "ok" if not too_deep else "FAIL", ", ".join(over_text(e) for e in too_deep) or "none"))
+        if not step_ok or too_deep:
+            status = 1
         for cpu in CPUS:
             lib = os.path.join(build, cpu.replace("+", "plus"), "libpogon.a")
             check = subprocess.run(["sh", os.path.join(ROOT, "scripts", "check-no-float.sh"), lib, "arm-none-eabi-objdump"],
