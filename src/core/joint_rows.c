@@ -27,6 +27,16 @@ void pg__joint_side_init(joint_side *s, const pg_world *w, uint32_t body, pg_vec
 /* (1/I) / S in Q2.30 (<= 2^16 for a radius of gyration >= 2^-8 m; saturates beyond) */
 static int64_t per_s(int64_t inv, int64_t S) { return S > 0 ? pg__div64_shl(inv, S, 30) : 0; }
 
+/* per_s(1/mB, S) for S = 1/mA + 1/mB, from other_per_s = per_s(1/mA, S): the exact
+ * quotients add up to 2^30, so their roundings do too unless both are ties, and a tie
+ * needs 1/mA 2^31 = (2 n + 1) S, which makes S a multiple of 2^31. For such an S, or a
+ * saturated sum, the division itself: the same bits either way, one division fewer. */
+static int64_t per_s_rest(int64_t inv, int64_t S, int64_t other, int64_t other_per_s)
+{
+    if ((S & INT64_C(0x7FFFFFFF)) != 0 && S - other == inv) return (INT64_C(1) << 30) - other_per_s;
+    return per_s(inv, S);
+}
+
 static pg_u128 square_u(int64_t v) { return pg__mul_u64(pg__mag64(v), pg__mag64(v)); }
 
 static pg_u128 sub_u128(pg_u128 a, pg_u128 b)
@@ -84,7 +94,7 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
     p->kinv[1] = over_det(-k12, inv_det);
     p->kinv[2] = over_det(k11, inv_det);
     mAs = per_s(A->inv_mass, S);
-    mBs = per_s(B->inv_mass, S);
+    mBs = per_s_rest(B->inv_mass, S, A->inv_mass, mAs);
     {
         int k;
         for (k = 0; k < 3; ++k) {
