@@ -24,8 +24,16 @@ void pg__joint_side_init(joint_side *s, const pg_world *w, uint32_t body, pg_vec
     s->fixed_angle = b->angle;
 }
 
-/* (1/I) / S in Q2.30 (<= 2^16 for a radius of gyration >= 2^-8 m; saturates beyond) */
-static int64_t per_s(int64_t inv, int64_t S) { return S > 0 ? pg__div64_shl(inv, S, 30) : 0; }
+/* (1/I) / S in Q2.30 (<= 2^16 for a radius of gyration >= 2^-8 m; saturates beyond);
+ * 0 without a division for a side that does not move (inv = 0) */
+static int64_t per_s(int64_t inv, int64_t S) { return S > 0 && inv != 0 ? pg__div64_shl(inv, S, 30) : 0; }
+
+/* per_s(1/mA, S) for S = 1/mA + 1/mB: exactly a half when the two are equal and S did not
+ * saturate, as for the identical bodies a chain or a grid joins */
+static int64_t per_s_first(int64_t inv, int64_t S, int64_t other)
+{
+    return inv == other && S - inv == other ? INT64_C(1) << 29 : per_s(inv, S);
+}
 
 /* per_s(1/mB, S) for S = 1/mA + 1/mB, from other_per_s = per_s(1/mA, S): the exact
  * quotients add up to 2^30, so their roundings do too unless both are ties, and a tie
@@ -68,7 +76,8 @@ static int32_t over_det(int64_t num, det_reciprocal r) { return sat32(pg__mul64_
 
 void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side *B)
 {
-    int64_t S = add_sat(A->inv_mass, B->inv_mass), ia = per_s(A->inv_inertia, S), ib = per_s(B->inv_inertia, S);
+    int64_t S = add_sat(A->inv_mass, B->inv_mass), ia = per_s(A->inv_inertia, S);
+    int64_t ib = B->inv_inertia == A->inv_inertia ? ia : per_s(B->inv_inertia, S); /* the same quotient */
     int64_t k11, k12, k22, mAs, mBs;
     pg_vec2 rA = A->lever, rB = B->lever;
     det_reciprocal inv_det;
@@ -93,7 +102,7 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
     p->kinv[0] = over_det(k22, inv_det);
     p->kinv[1] = over_det(-k12, inv_det);
     p->kinv[2] = over_det(k11, inv_det);
-    mAs = per_s(A->inv_mass, S);
+    mAs = per_s_first(A->inv_mass, S, B->inv_mass);
     mBs = per_s_rest(B->inv_mass, S, A->inv_mass, mAs);
     {
         int k;

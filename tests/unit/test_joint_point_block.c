@@ -1,15 +1,24 @@
-/* test_joint_point_block.c — the point block's mass shares (src/core/joint_rows.c,
+/* test_joint_point_block.c — the point block's shares (src/core/joint_rows.c,
  * pg__joint_point_init): mA and mB are (1/mA) / S and (1/mB) / S in Q2.30, S = 1/mA + 1/mB
- * saturated, each rounded to nearest with ties away from zero, then times K'^-1. B's share
- * is made as 2^30 less A's where that is the same number; these cases hold it to an
- * __int128 reference where it is not: both shares ties (S a multiple of 2^31), a
- * saturated S, a side that does not move, and random masses, inertias and levers. */
+ * saturated, each rounded to nearest with ties away from zero, then times K'^-1; ia and ib
+ * are (1/IA) / S and (1/IB) / S. The set-up skips divisions where an identity gives the
+ * same number (B's share as 2^30 less A's, a half for equal masses, one quotient for equal
+ * inertias, 0 for a side that does not move); these cases hold it to an __int128
+ * reference where the identities do not apply: both shares ties (S a multiple of 2^31),
+ * a saturated S, and random masses, inertias and levers, equal and not. */
 #include "pg_test.h"
 
 #include "joint_rows.h"
 
 /* round(inv 2^30 / S), as the set-up rounds a share */
 static int64_t share(int64_t inv, int64_t S) { return (int64_t)pgt_div_round((pgt_i128)inv << 30, S); }
+
+/* the inertia terms' (1/I) / S, which saturates to INT64_MAX past 2^63 */
+static int64_t share_sat(int64_t inv, int64_t S)
+{
+    pgt_i128 q = pgt_div_round((pgt_i128)inv << 30, S);
+    return q > (pgt_i128)INT64_MAX ? INT64_MAX : (int64_t)q;
+}
 
 static int64_t sum_sat(int64_t a, int64_t b) { return a > INT64_MAX - b ? INT64_MAX : a + b; }
 
@@ -31,6 +40,8 @@ static void check(const joint_side *A, const joint_side *B)
     int k;
     pg__joint_point_init(&p, A, B);
     assert_true(p.S == S);
+    assert_true(p.ia == share_sat(A->inv_inertia, S));
+    assert_true(p.ib == share_sat(B->inv_inertia, S));
     a = share(A->inv_mass, S);
     b = share(B->inv_mass, S);
     for (k = 0; k < 3; ++k) {
@@ -88,12 +99,30 @@ static void test_random(void **state)
     }
 }
 
+/* Identical bodies: equal masses make each share exactly a half, equal inertias one
+ * quotient for both sides. */
+static void test_identical_bodies(void **state)
+{
+    pgt_rng rng = pgt_rng_seed(UINT64_C(0x1de471ca1));
+    int k;
+    (void)state;
+    for (k = 0; k < 20000; ++k) {
+        uint64_t r = pgt_next(&rng), t = pgt_next(&rng);
+        int64_t m = (int64_t)(r >> (1 + t % 62u)), i = (int64_t)(t >> (1 + (r >> 8) % 62u));
+        joint_side A = side(m, i, (pg_fix)(int16_t)(r >> 16) * 4, (pg_fix)(int16_t)(t >> 16) * 4);
+        joint_side B = side(m, i, (pg_fix)(int16_t)(r >> 32) * 4, (pg_fix)(int16_t)(t >> 32) * 4);
+        if (m == 0) continue;
+        check(&A, &B);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ties),
         cmocka_unit_test(test_saturated_and_static),
         cmocka_unit_test(test_random),
+        cmocka_unit_test(test_identical_bodies),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
