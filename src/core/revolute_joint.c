@@ -159,8 +159,10 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
     const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
     velocity A = A0, B = B0;
+    /* the levers are current: a body turns only when positions are integrated, and the
+     * first relax sweep after that (joint_solver.c) turned them and made the angular
+     * coefficients again; in the first substep the set-up's hold (no turn yet) */
     if (c->point.S == 0) return;
-    if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     revolute_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on && (c->motor_imp | c->lower_imp | c->upper_imp) != 0) /* a row of lambda 0 changes nothing */
         joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
