@@ -198,19 +198,21 @@ static void orient(joint_constraint *c, const solver_body *bodies)
 
 void pg__distance_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
     if (!c->axial.on) return;
     orient(c, bodies);
     /* a spring's impulse is a force's, made again each substep: not warm started */
     joint_row_apply(&c->axial, &A, &B, (has_spring(c->src) ? 0 : c->axial_imp) + c->lower_imp - c->upper_imp);
-    joint_store(bodies, &c->A, &A);
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->A, &A, &A0);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
     int64_t len;
     if (!c->axial.on) return;
     if (moved) orient(c, bodies);
@@ -228,8 +230,8 @@ void pg__distance_joint_solve(joint_constraint *c, solver_body *bodies, const st
         pg__joint_limit_solve(&c->axial, &c->lower_imp, &A, &B, len - j->lower, 1, &c->soft, use_bias, ctx->n);
         pg__joint_limit_solve(&c->axial, &c->upper_imp, &A, &B, len - j->upper, -1, &c->soft, use_bias, ctx->n);
     }
-    joint_store(bodies, &c->A, &A);
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->A, &A, &A0);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 void pg__distance_joint_store(const joint_constraint *c, pg_joint *j)

@@ -24,8 +24,31 @@ void pg__joint_side_init(joint_side *s, const pg_world *w, uint32_t body, pg_vec
     s->fixed_angle = b->angle;
 }
 
-/* (1/I) / S in Q2.30 (<= 2^16 for a radius of gyration >= 2^-8 m; saturates beyond) */
-static int64_t per_s(int64_t inv, int64_t S) { return S > 0 ? pg__div64_shl(inv, S, 30) : 0; }
+/* (1/I) / S in Q2.30 (<= 2^16 for a radius of gyration >= 2^-8 m; saturates beyond);
+ * 0 without a division for a side that does not move (inv = 0) */
+static int64_t per_s(int64_t inv, int64_t S) { return S > 0 && inv != 0 ? pg__div64_shl(inv, S, 30) : 0; }
+
+/* per_s(1/mA, S) for S = 1/mA + 1/mB: exactly a half when the two are equal and S did not
+ * saturate, as for the identical bodies a chain or a grid joins */
+static int64_t per_s_first(int64_t inv, int64_t S, int64_t other)
+{
+    return inv == other && S - inv == other ? INT64_C(1) << 29 : per_s(inv, S);
+}
+
+/* per_s(1/mB, S) for S = 1/mA + 1/mB, from other_per_s = per_s(1/mA, S): the exact
+ * quotients add up to 2^30, so their roundings do too unless both are ties, and a tie
+ * needs 1/mA 2^31 = (2 n + 1) S, which makes S a multiple of 2^31. For such an S, or a
+ * saturated sum, the division itself: the same bits either way, one division fewer. */
+static int64_t per_s_rest(int64_t inv, int64_t S, int64_t other, int64_t other_per_s)
+{
+    if ((S & INT64_C(0x7FFFFFFF)) != 0 && S - other == inv) return (INT64_C(1) << 30) - other_per_s;
+    return per_s(inv, S);
+}
+
+/* pg__mul64_shr without its 128-bit product when a factor is 0 (the result is then 0):
+ * a static side's inverse inertia, and the lever components that are 0 while a body is
+ * not turned from an axis-aligned anchor */
+static int64_t mul_shr_or_0(int64_t a, int64_t b, int shift) { return a == 0 || b == 0 ? 0 : pg__mul64_shr(a, b, shift); }
 
 static pg_u128 square_u(int64_t v) { return pg__mul_u64(pg__mag64(v), pg__mag64(v)); }
 
@@ -54,11 +77,12 @@ static det_reciprocal reciprocal_of_det(pg_u128 det)
     return r;
 }
 
-static int32_t over_det(int64_t num, det_reciprocal r) { return sat32(pg__mul64_shr(num, r.recip, r.shift)); }
+static int32_t over_det(int64_t num, det_reciprocal r) { return sat32(mul_shr_or_0(num, r.recip, r.shift)); }
 
 void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side *B)
 {
-    int64_t S = add_sat(A->inv_mass, B->inv_mass), ia = per_s(A->inv_inertia, S), ib = per_s(B->inv_inertia, S);
+    int64_t S = add_sat(A->inv_mass, B->inv_mass), ia = per_s(A->inv_inertia, S);
+    int64_t ib = B->inv_inertia == A->inv_inertia ? ia : per_s(B->inv_inertia, S); /* the same quotient */
     int64_t k11, k12, k22, mAs, mBs;
     pg_vec2 rA = A->lever, rB = B->lever;
     det_reciprocal inv_det;
@@ -73,9 +97,9 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
         return;
     }
     /* K' = I + (1/IA / S) rA_perp rA_perp^T + (1/IB / S) rB_perp rB_perp^T, Q2.30 (r^2 in Q32 < 2^62) */
-    k11 = add_sat(add_sat(INT64_C(1) << 30, pg__mul64_shr(ia, (int64_t)rA.y * rA.y, 32)), pg__mul64_shr(ib, (int64_t)rB.y * rB.y, 32));
-    k22 = add_sat(add_sat(INT64_C(1) << 30, pg__mul64_shr(ia, (int64_t)rA.x * rA.x, 32)), pg__mul64_shr(ib, (int64_t)rB.x * rB.x, 32));
-    k12 = -pg__mul64_shr(ia, (int64_t)rA.x * rA.y, 32) - pg__mul64_shr(ib, (int64_t)rB.x * rB.y, 32);
+    k11 = add_sat(add_sat(INT64_C(1) << 30, mul_shr_or_0(ia, (int64_t)rA.y * rA.y, 32)), mul_shr_or_0(ib, (int64_t)rB.y * rB.y, 32));
+    k22 = add_sat(add_sat(INT64_C(1) << 30, mul_shr_or_0(ia, (int64_t)rA.x * rA.x, 32)), mul_shr_or_0(ib, (int64_t)rB.x * rB.x, 32));
+    k12 = -mul_shr_or_0(ia, (int64_t)rA.x * rA.y, 32) - mul_shr_or_0(ib, (int64_t)rB.x * rB.y, 32);
     if (k11 >= INT64_C(1) << 62 || k22 >= INT64_C(1) << 62) { /* lever arms far outside the envelope: keep the products in range */
         k11 >>= 8, k22 >>= 8, k12 = pg__round_shift64(k12, 8);
     }
@@ -83,8 +107,8 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
     p->kinv[0] = over_det(k22, inv_det);
     p->kinv[1] = over_det(-k12, inv_det);
     p->kinv[2] = over_det(k11, inv_det);
-    mAs = per_s(A->inv_mass, S);
-    mBs = per_s(B->inv_mass, S);
+    mAs = per_s_first(A->inv_mass, S, B->inv_mass);
+    mBs = per_s_rest(B->inv_mass, S, A->inv_mass, mAs);
     {
         int k;
         for (k = 0; k < 3; ++k) {
@@ -98,10 +122,10 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
 void pg__joint_point_orient(joint_point *p, pg_vec2 rA, pg_vec2 rB)
 {
     /* g_j = (1/I / S) sum_i r_perp_i kinv_ij, r_perp = (-r.y, r.x): Q16 x Q30 = Q46, then Q30 x Q46 >> 52 = Q24 */
-    p->gA[0] = p->ia == 0 ? 0 : sat32(pg__mul64_shr(p->ia, -(int64_t)rA.y * p->kinv[0] + (int64_t)rA.x * p->kinv[1], 52));
-    p->gA[1] = p->ia == 0 ? 0 : sat32(pg__mul64_shr(p->ia, -(int64_t)rA.y * p->kinv[1] + (int64_t)rA.x * p->kinv[2], 52));
-    p->gB[0] = p->ib == 0 ? 0 : sat32(pg__mul64_shr(p->ib, -(int64_t)rB.y * p->kinv[0] + (int64_t)rB.x * p->kinv[1], 52));
-    p->gB[1] = p->ib == 0 ? 0 : sat32(pg__mul64_shr(p->ib, -(int64_t)rB.y * p->kinv[1] + (int64_t)rB.x * p->kinv[2], 52));
+    p->gA[0] = sat32(mul_shr_or_0(p->ia, -(int64_t)rA.y * p->kinv[0] + (int64_t)rA.x * p->kinv[1], 52));
+    p->gA[1] = sat32(mul_shr_or_0(p->ia, -(int64_t)rA.y * p->kinv[1] + (int64_t)rA.x * p->kinv[2], 52));
+    p->gB[0] = sat32(mul_shr_or_0(p->ib, -(int64_t)rB.y * p->kinv[0] + (int64_t)rB.x * p->kinv[1], 52));
+    p->gB[1] = sat32(mul_shr_or_0(p->ib, -(int64_t)rB.y * p->kinv[1] + (int64_t)rB.x * p->kinv[2], 52));
 }
 
 void pg__joint_row_linear(joint_row *r, const joint_side *A, const joint_side *B, pg_dir d, pg_vec2 rA, pg_vec2 rB)

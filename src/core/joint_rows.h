@@ -123,16 +123,18 @@ static inline int joint_levers_now(joint_constraint *c, const solver_body *bodie
 }
 
 /* Store a joint's velocities into a side's body, adding the change to the body's joint
- * change (joint_change: the contacts' warm start leaves it out, WARM START). */
-static inline void joint_store(solver_body *bodies, const joint_side *s, const velocity *v)
+ * change (joint_change: the contacts' warm start leaves it out, WARM START). v0 is the
+ * velocity the pass loaded, which nothing has written since (a joint's two sides are two
+ * bodies, or one is the dummy): taken from the pass, not read again from the body, which
+ * after the other side's store the compiler would have to. */
+static inline void joint_store(solver_body *bodies, const joint_side *s, const velocity *v, const velocity *v0)
 {
     solver_body *b = &bodies[s->slot];
-    int64_t x0 = b->v.x, y0 = b->v.y, w0 = b->w;
     if (!s->active) return; /* the dummy side: its coefficients are 0 */
     store_velocity(b, v);
-    s->change->x += (int64_t)b->v.x - x0;
-    s->change->y += (int64_t)b->v.y - y0;
-    s->change->w += (int64_t)b->w - w0;
+    s->change->x += (int64_t)b->v.x - v0->x;
+    s->change->y += (int64_t)b->v.y - v0->y;
+    s->change->w += (int64_t)b->w - v0->w;
 }
 
 /* The anchor's world point now: a moving side's centre plus its lever now. */

@@ -89,7 +89,8 @@ void pg__joints_warm_start(const pg_joint_stage *s, solver_body *bodies)
 /* A pass over the joints. `moved`: the bodies may have moved since the joints' last
  * visit, so the rows that follow them (levers, directions, position errors) are made
  * again; positions change only when they are integrated, between the solve pass and the
- * first relax sweep, and the warm start before the solve pass orients every joint. */
+ * first relax sweep, and the warm start before the solve pass orients every joint (a
+ * pin's warm start finds its levers made by that first relax sweep, or by the set-up). */
 static void pass(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies, int use_bias, int moved)
 {
     uint32_t i;
@@ -115,7 +116,7 @@ void pg__joints_solve(const pg_joint_stage *s, const step_context *ctx, solver_b
  * on its soft joints for long (test_joint_weld asserts that it comes to rest). Chains of
  * pins and grids of them hold with the one sweep (test_joint_chain, pogon-bench's
  * joint_grid and chain and their sanity figures, docs/joints.md). */
-#define JOINT_RELAX_SWEEPS 1
+#define JOINT_RELAX_SWEEPS 1 /* at least 1: the first sweep turns the levers for the next warm start */
 #define WELD_RELAX_SWEEPS 8 /* the welds' sweeps, the first of them with every joint */
 
 void pg__joints_relax(const pg_joint_stage *s, const step_context *ctx, solver_body *bodies)

@@ -141,16 +141,18 @@ void pg__mouse_joint_prepare(joint_constraint *c, const step_context *ctx)
 
 void pg__mouse_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
     if (c->point.S == 0) return;
     if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
     int64_t bx, by, vx, vy, nx, ny, qx, qy, q;
     (void)ctx;
     if (c->point.S == 0 || !use_bias) return; /* a spring: the solve pass only */
@@ -171,7 +173,7 @@ void pg__mouse_joint_solve(joint_constraint *c, solver_body *bodies, const step_
     pg__joint_point_apply(&c->point, &A, &B, nx - c->imp[0], ny - c->imp[1]);
     c->imp[0] = nx;
     c->imp[1] = ny;
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 void pg__mouse_joint_store(const joint_constraint *c, pg_joint *j)

@@ -205,20 +205,22 @@ static void orient(joint_constraint *c, const solver_body *bodies)
 
 void pg__prismatic_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
     if (!c->axial.on) return;
     orient(c, bodies);
     joint_row_apply(&c->axial, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
     joint_row_apply(&c->perp, &A, &B, c->imp[0]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
-    joint_store(bodies, &c->A, &A);
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->A, &A, &A0);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
     int64_t along, across;
     pg_angle aA;
     if (!c->axial.on) return;
@@ -234,8 +236,8 @@ void pg__prismatic_joint_solve(joint_constraint *c, solver_body *bodies, const s
     pg__joint_row_solve(&c->perp, &c->imp[0], &A, &B, across, &c->soft, use_bias);
     pg__joint_row_solve(&c->angular, &c->axial_imp, &A, &B, pg_angle_to_radians(joint_angle_now(&c->B, bodies) - aA - j->reference_angle),
                     &c->soft, use_bias);
-    joint_store(bodies, &c->A, &A);
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->A, &A, &A0);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 void pg__prismatic_joint_store(const joint_constraint *c, pg_joint *j)

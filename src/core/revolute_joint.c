@@ -157,14 +157,17 @@ void pg__revolute_joint_prepare(joint_constraint *c, const step_context *ctx)
 
 void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
+    /* the levers are current: a body turns only when positions are integrated, and the
+     * first relax sweep after that (joint_solver.c) turned them and made the angular
+     * coefficients again; in the first substep the set-up's hold (no turn yet) */
     if (c->point.S == 0) return;
-    if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     revolute_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on && (c->motor_imp | c->lower_imp | c->upper_imp) != 0) /* a row of lambda 0 changes nothing */
         joint_row_apply(&c->angular, &A, &B, c->motor_imp + c->lower_imp - c->upper_imp);
-    joint_store(bodies, &c->A, &A);
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->A, &A, &A0);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 /* A pass, inline in the two forms the stages call (the solve pass, with bias; a relax
@@ -172,7 +175,8 @@ void pg__revolute_joint_warm_start(joint_constraint *c, solver_body *bodies)
 PG__INLINE_PASS void revolute_pass(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
     int64_t ax = 0, ay = 0, bx = 0, by = 0;
     if (c->point.S == 0) return;
     if (moved && joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
@@ -190,8 +194,8 @@ PG__INLINE_PASS void revolute_pass(joint_constraint *c, solver_body *bodies, con
         joint_anchor_now(&c->B, bodies, &bx, &by);
     }
     revolute_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
-    joint_store(bodies, &c->A, &A);
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->A, &A, &A0);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 void pg__revolute_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)

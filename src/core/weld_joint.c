@@ -105,19 +105,21 @@ void pg__weld_joint_prepare(joint_constraint *c, const step_context *ctx)
 
 void pg__weld_joint_warm_start(joint_constraint *c, solver_body *bodies)
 {
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
     if (c->point.S == 0) return;
     if (joint_levers_now(c, bodies)) pg__joint_point_orient(&c->point, c->A.lever_now, c->B.lever_now);
     pg__joint_point_apply(&c->point, &A, &B, c->imp[0], c->imp[1]);
     if (c->angular.on) joint_row_apply(&c->angular, &A, &B, c->axial_imp);
-    joint_store(bodies, &c->A, &A);
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->A, &A, &A0);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_context *ctx, int use_bias, int moved)
 {
     const pg_joint *j = c->src;
-    velocity A = load_velocity(&bodies[c->A.slot]), B = load_velocity(&bodies[c->B.slot]);
+    const velocity A0 = load_velocity(&bodies[c->A.slot]), B0 = load_velocity(&bodies[c->B.slot]);
+    velocity A = A0, B = B0;
     int64_t ax = 0, ay = 0, bx = 0, by = 0;
     pg_angle rel;
     (void)ctx;
@@ -130,8 +132,8 @@ void pg__weld_joint_solve(joint_constraint *c, solver_body *bodies, const step_c
         joint_anchor_now(&c->B, bodies, &bx, &by);
     }
     if (use_bias || j->hertz == 0) pg__joint_point_solve(c, &A, &B, bx - ax, by - ay, &c->soft, use_bias);
-    joint_store(bodies, &c->A, &A);
-    joint_store(bodies, &c->B, &B);
+    joint_store(bodies, &c->A, &A, &A0);
+    joint_store(bodies, &c->B, &B, &B0);
 }
 
 void pg__weld_joint_store(const joint_constraint *c, pg_joint *j)
