@@ -5,6 +5,13 @@
 #include "joint_rows.h"
 
 static int64_t add_sat(int64_t a, int64_t b) { return a > INT64_MAX - b ? INT64_MAX : a + b; } /* a, b >= 0 */
+/* a - b for |a|, |b| <= INT64_MAX, saturated to +-INT64_MAX (never INT64_MIN, so the result
+ * can be negated): only lever arms and inertias far outside the envelope reach it */
+static int64_t sub_sat(int64_t a, int64_t b)
+{
+    if (b > 0) return a < -INT64_MAX + b ? -INT64_MAX : a - b;
+    return a > INT64_MAX + b ? INT64_MAX : a - b;
+}
 
 static int32_t sat32(int64_t v) { return v > INT32_MAX ? INT32_MAX : v < -INT32_MAX ? -INT32_MAX : (int32_t)v; }
 
@@ -69,6 +76,10 @@ typedef struct det_reciprocal { int64_t recip; int shift; } det_reciprocal;
 static det_reciprocal reciprocal_of_det(pg_u128 det)
 {
     det_reciprocal r;
+    /* det < 2^124 when K' is what it models (entries < 2^62, k12^2 <= k11 k22); a K'
+     * saturated far outside the envelope can break that, and det is then held below 2^124
+     * so that every shift below stays defined */
+    if ((det.hi >> 60) != 0) det.hi = ((uint64_t)1 << 60) - 1u, det.lo = UINT64_MAX;
     int bits = det.hi != 0 ? 64 + pg__bit_length64(det.hi) : pg__bit_length64(det.lo); /* >= 61 */
     int s = bits > 61 ? bits - 40 : 21; /* 21..84; bits >= 61 as det >= 2^60, the floor keeps every shift defined */
     uint64_t d = s >= 64 ? det.hi >> (s - 64) : (det.lo >> s) | (det.hi << (64 - s));  /* [2^39, 2^40) */
@@ -99,9 +110,10 @@ void pg__joint_point_init(joint_point *p, const joint_side *A, const joint_side 
     /* K' = I + (1/IA / S) rA_perp rA_perp^T + (1/IB / S) rB_perp rB_perp^T, Q2.30 (r^2 in Q32 < 2^62) */
     k11 = add_sat(add_sat(INT64_C(1) << 30, mul_shr_or_0(ia, (int64_t)rA.y * rA.y, 32)), mul_shr_or_0(ib, (int64_t)rB.y * rB.y, 32));
     k22 = add_sat(add_sat(INT64_C(1) << 30, mul_shr_or_0(ia, (int64_t)rA.x * rA.x, 32)), mul_shr_or_0(ib, (int64_t)rB.x * rB.x, 32));
-    k12 = -mul_shr_or_0(ia, (int64_t)rA.x * rA.y, 32) - mul_shr_or_0(ib, (int64_t)rB.x * rB.y, 32);
+    k12 = sub_sat(-mul_shr_or_0(ia, (int64_t)rA.x * rA.y, 32), mul_shr_or_0(ib, (int64_t)rB.x * rB.y, 32));
     if (k11 >= INT64_C(1) << 62 || k22 >= INT64_C(1) << 62) { /* lever arms far outside the envelope: keep the products in range */
-        k11 >>= 8, k22 >>= 8, k12 = pg__round_shift64(k12, 8);
+        const int64_t lim = INT64_MAX - 128; /* pg__round_shift64's range at 8 bits; a saturated k12 stays saturated */
+        k11 >>= 8, k22 >>= 8, k12 = pg__round_shift64(k12 > lim ? lim : k12 < -lim ? -lim : k12, 8);
     }
     inv_det = reciprocal_of_det(sub_u128(pg__mul_u64((uint64_t)k11, (uint64_t)k22), square_u(k12)));
     p->kinv[0] = over_det(k22, inv_det);
