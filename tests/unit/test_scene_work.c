@@ -1,13 +1,15 @@
 /* test_scene_work.c — the scene and replay readers with a work area from the caller
  * (the `_in` calls of include/pogon/scene_file.h and replay_file.h): every shipped scene
  * loads to the same world as through the plain calls, corpus replays read and play to
- * their end with every checkpoint matching, and a work area that is NULL, one byte short
+ * their end with every checkpoint matching (in a build with another sine table, which
+ * refuses the corpus, replays of the same scenes recorded by the test), and a work area that is NULL, one byte short
  * or misaligned is refused with PG_ERR_INVALID_ARGUMENT, a message naming the size, and
  * nothing else written.
  */
 #include "pg_test.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "pogon/pogon.h"
 #include "pogon/replay_file.h"
@@ -27,11 +29,62 @@ static const char *const scenes[] = {"bridge.scene",   "car.scene",         "cha
 /* a scene without joints, one with joints and a concave bowl, and one with commands every frame */
 static const char *const replays[] = {"demo.pgr", "car.pgr", "commands.pgr", "bridge.pgr"};
 
+static pg_world *world_of(const pg_world_def *def, void **memory);
+
 static char *read_in(const char *dir, const char *name, size_t *size)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/%s", dir, name);
     return pgt_read_file(path, size);
+}
+
+/* A replay this build can play. The corpus file itself when this build has its numeric
+ * configuration (the 12-bit sine table); another build (the table8 preset) refuses it,
+ * so the same scene is recorded here instead, 180 frames with the gravity changed every
+ * 30 frames, so that the calls under test still read and play a file with commands. */
+static uint8_t *replay_for_this_build(const char *name, size_t *size)
+{
+    static const char *const scene_of[][2] = {
+        {"demo.pgr", "demo.scene"}, {"car.pgr", "car.scene"}, {"commands.pgr", "demo.scene"}, {"bridge.pgr", "bridge.scene"}};
+    uint8_t *file = (uint8_t *)read_in(POGON_REPLAYS_DIR, name, size);
+    pg_replay_info info;
+    pg_replay_error err;
+    const size_t cap = (size_t)1 << 22;
+    uint8_t *out;
+    char *text = NULL;
+    size_t text_size = 0, k;
+    pg_world_def def;
+    pg_scene_error serr;
+    pg_replay_writer wr;
+    pg_world *w;
+    void *memory;
+    int frame;
+    assert_non_null(file);
+    if (pg_replay_read(file, *size, &info, &err) != PG_ERR_INCOMPATIBLE) return file;
+    free(file);
+    for (k = 0; k < sizeof scene_of / sizeof scene_of[0] && text == NULL; ++k)
+        if (strcmp(scene_of[k][0], name) == 0) text = read_in(POGON_SCENES_DIR, scene_of[k][1], &text_size);
+    assert_non_null(text);
+    assert_int_equal(pg_scene_read_def(text, text_size, &def, &serr), PG_OK);
+    w = world_of(&def, &memory);
+    assert_int_equal(pg_scene_load(w, text, text_size, &serr), PG_OK);
+    out = malloc(cap);
+    assert_non_null(out);
+    assert_int_equal(pg_replay_writer_begin(&wr, out, cap, text, text_size, 30), PG_OK);
+    assert_int_equal(pg_replay_writer_add_checkpoint_world(&wr, w), PG_OK);
+    for (frame = 0; frame < 180; ++frame) {
+        pg_command c = pg_command_init(PG_CMD_SET_GRAVITY);
+        uint32_t n = frame % 30 == 10 ? 1u : 0u;
+        c.vec = pg_v2(0, frame % 60 == 10 ? -PG_FIX_C(5) : -PG_FIX_C(10));
+        assert_int_equal(pg_replay_writer_add_frame(&wr, &c, n), PG_OK);
+        if (n > 0) assert_int_equal(pg_command_apply(w, &c, NULL), PG_OK);
+        assert_int_equal(pg_world_step(w), PG_OK);
+        if (pg_replay_writer_checkpoint_due(&wr)) assert_int_equal(pg_replay_writer_add_checkpoint_world(&wr, w), PG_OK);
+    }
+    assert_int_equal(pg_replay_writer_finish(&wr, pg_world_hash(w), size), PG_OK);
+    free(memory);
+    free(text);
+    return out;
 }
 
 /* A buffer of `bytes` aligned to 8 (malloc's alignment is at least that). */
@@ -225,7 +278,7 @@ static void test_replays_play_in_as_plain(void **state)
     (void)state;
     for (i = 0; i < sizeof replays / sizeof replays[0]; ++i) {
         size_t size = 0;
-        uint8_t *file = (uint8_t *)read_in(POGON_REPLAYS_DIR, replays[i], &size);
+        uint8_t *file = replay_for_this_build(replays[i], &size);
         uint32_t plain_checkpoints = 0, in_checkpoints = 0;
         assert_non_null(file);
         PG_EXPECT_EQ(play(file, size, 1, &in_checkpoints), play(file, size, 0, &plain_checkpoints), "%s", replays[i]);
@@ -237,7 +290,7 @@ static void test_replays_play_in_as_plain(void **state)
 static void test_replay_info_and_upgrade_in_as_plain(void **state)
 {
     size_t size = 0, bytes = pg_replay_work_size(), n_plain = 0, n_in = 0;
-    uint8_t *file = (uint8_t *)read_in(POGON_REPLAYS_DIR, "car.pgr", &size);
+    uint8_t *file = replay_for_this_build("car.pgr", &size);
     void *work = work_of(bytes);
     uint8_t *out_plain, *out_in;
     pg_replay_info plain, in;
@@ -280,7 +333,7 @@ static void test_replay_info_and_upgrade_in_as_plain(void **state)
 static void test_replay_work_refused(void **state)
 {
     size_t size = 0, bytes = pg_replay_work_size(), mem = 0;
-    uint8_t *file = (uint8_t *)read_in(POGON_REPLAYS_DIR, "demo.pgr", &size);
+    uint8_t *file = replay_for_this_build("demo.pgr", &size);
     unsigned char *work = work_of(bytes + 8u);
     uint8_t *out;
     pg_replay_info info, pattern;
