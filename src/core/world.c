@@ -101,7 +101,7 @@ static layout compute_layout(const pg_world_def *d)
      * islands, and between steps the mass of a body being changed (body.h), a concave
      * body's decomposition (concave.h) or the check of a snapshot being restored. */
     PLACE(scratch, max2(max2(pg_broadphase_scratch_bytes(d->max_shapes, pair_capacity), sizeof(pg_contact) * d->max_contacts),
-                        max2(pg__solver_scratch_bytes(d), max2(pg__body_mass_scratch_bytes(), pg__concave_scratch_bytes()))));
+                        max2(pg__solver_scratch_bytes(d), pg__concave_scratch_bytes()))); /* the mass scratch and more */
     PLACE(island, sizeof(uint32_t) * d->max_bodies);
     PLACE(start, sizeof(pg_step_start) * d->max_bodies);
     PLACE(begin, sizeof(pg_contact_event) * pg__event_capacity(d));

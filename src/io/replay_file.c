@@ -15,6 +15,13 @@
 #else
 #define PG__OWN_FRAME static
 #endif
+/* The opposite: a function that adds no frame to the scene reader's chain below it
+ * (the stack budget of docs/embedded.md), wherever it is called from. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PG__NO_FRAME static inline __attribute__((always_inline))
+#else
+#define PG__NO_FRAME static inline
+#endif
 
 /* ---- little-endian fields ------------------------------------------------------------ */
 static void put_u16(uint8_t *p, uint32_t v)
@@ -319,7 +326,7 @@ PG__OWN_FRAME pg_result scene_error(const pg_replay_info *info, const pg_scene_e
 }
 
 /* Check the scene text with the scene parser; errors name the file offset. */
-static pg_result check_scene(const pg_replay_info *info, pg_world_def *def, pg_replay_error *e, pg__replay_work *w)
+PG__NO_FRAME pg_result check_scene(const pg_replay_info *info, pg_world_def *def, pg_replay_error *e, pg__replay_work *w)
 {
     pg_result r = pg_scene_read_def_in(info->scene_text, info->scene_size, def, &w->scene_error, scene_work(w),
                                        pg_scene_work_size());
@@ -596,10 +603,8 @@ pg_result pg__replay_read(const uint8_t *data, size_t size, pg_replay_info *info
     clear_error(error);
     r = check_file(data, size, info, &w->info, error);
     if (r != PG_OK) return r;
-    /* check_scene, written out: one frame less above the scene reader */
-    r = pg_scene_read_def_in(w->info.scene_text, w->info.scene_size, &w->def, &w->scene_error, scene_work(w),
-                             pg_scene_work_size());
-    if (r != PG_OK) return scene_error(&w->info, &w->scene_error, error, "scene text does not parse: ");
+    r = check_scene(&w->info, &w->def, error, w);
+    if (r != PG_OK) return r;
     *info = w->info;
     /* sound, but stepped with other numerics than this build's: playing it here could
      * only diverge, so say which switch differs instead */
