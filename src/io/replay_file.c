@@ -6,6 +6,7 @@
 #include "replay_file_internal.h"
 #include "numeric_config.h"
 #include "text.h"
+#include "work_area.h"
 #include "world_internal.h" /* pg__fail: pg_replay_apply_frame's messages */
 
 /* A function whose frame must not be merged into its caller's (gcc inlines a static
@@ -299,16 +300,11 @@ size_t pg_replay_work_size(void) { return REPLAY_OWN_BYTES + pg_scene_work_size(
 
 pg__replay_work *pg__replay_work_in(void *work, size_t work_size, pg_replay_error *error)
 {
-    const char *why = work == NULL ? "work is NULL" : ((uintptr_t)work & 7u) != 0 ? "work is not aligned to 8 bytes"
-                    : work_size < pg_replay_work_size() ? "work is too small" : NULL;
+    const char *why = pg__work_area_problem(work, work_size, pg_replay_work_size());
     msg m;
     if (why == NULL) return (pg__replay_work *)work;
     m = set_error(error, 0, "work", "work_size", -1, -1, why);
-    pg__text_put(&m, ": the replay reader needs pg_replay_work_size() = ");
-    pg__text_u64(&m, pg_replay_work_size());
-    pg__text_put(&m, " bytes aligned to 8 (given ");
-    pg__text_u64(&m, work == NULL ? 0u : work_size);
-    pg__text_put(&m, ")");
+    pg__work_area_explain(&m, "replay reader", "pg_replay_work_size()", pg_replay_work_size(), work, work_size);
     return NULL;
 }
 

@@ -23,6 +23,7 @@
 #include "joint_pool.h"
 #include "mass.h"
 #include "text.h"
+#include "work_area.h"
 #include "world_internal.h"
 
 /* A function whose frame must not be merged into its caller's (gcc inlines a static
@@ -1924,13 +1925,11 @@ PG__STATIC_ASSERT(sizeof(scene_parser) <= PG_SCENE_WORK_BYTES, scene_work_fits);
 
 size_t pg_scene_work_size(void) { return sizeof(scene_parser); }
 
-/* The parser in `work`, or NULL after an error naming what the work area lacks. Aligned
- * to 8 bytes: the parser holds int64 values, and 8 is their alignment on every target
- * pogon supports (AAPCS included). */
+/* The parser in `work`, or NULL after an error naming what the work area lacks
+ * (work_area.h). */
 static scene_parser *parser_in(void *work, size_t work_size, pg_scene_error *error)
 {
-    const char *why = work == NULL ? "work is NULL" : ((uintptr_t)work & 7u) != 0 ? "work is not aligned to 8 bytes"
-                    : work_size < sizeof(scene_parser) ? "work is too small" : NULL;
+    const char *why = pg__work_area_problem(work, work_size, sizeof(scene_parser));
     if (why != NULL) {
         if (error != NULL) {
             msg m;
@@ -1938,11 +1937,7 @@ static scene_parser *parser_in(void *work, size_t work_size, pg_scene_error *err
             error->column = 0;
             m = pg__text_in(error->message, sizeof error->message);
             pg__text_put(&m, why);
-            pg__text_put(&m, ": the scene reader needs pg_scene_work_size() = ");
-            pg__text_u64(&m, sizeof(scene_parser));
-            pg__text_put(&m, " bytes aligned to 8 (given ");
-            pg__text_u64(&m, work == NULL ? 0u : work_size);
-            pg__text_put(&m, ")");
+            pg__work_area_explain(&m, "scene reader", "pg_scene_work_size()", sizeof(scene_parser), work, work_size);
         }
         return NULL;
     }
