@@ -105,6 +105,24 @@ export const sampleVelocities = (id, n) => page.evaluate(([index, generation, co
   requestAnimationFrame(sample);
 }), [id.index, id.generation, n]);
 
+// The x in [lo, hi] (a 0.25 m grid) farthest from every body that could come near a ball
+// dropped there within `seconds`: each body's horizontal extent now, widened by the distance
+// its horizontal speed covers in that time. A body spanning most of the range (the ground)
+// is left out. {x, clearance} in metres.
+export async function clearColumn(lo, hi, seconds) {
+  const spans = (await bodies()).map((b) => {
+    const xs = b.shapes.flatMap((s) => s.vertices.flatMap((v) => [v[0] - s.radius, v[0] + s.radius]));
+    const reach = b.type === 'static' ? 0 : Math.abs(b.velocity[0]) * seconds;
+    return [Math.min(...xs) - reach, Math.max(...xs) + reach];
+  }).filter(([left, right]) => right - left < 0.75 * (hi - lo));
+  let best = { x: lo, clearance: -Infinity };
+  for (let x = lo; x <= hi; x += 0.25) {
+    const clearance = Math.min(...spans.map(([left, right]) => Math.max(left - x, x - right, 0)));
+    if (clearance > best.clearance) best = { x, clearance };
+  }
+  return best;
+}
+
 // Choose a shipped replay and start it: the app says so in a new message.
 export async function startShipped(file) {
   const serial = await hook(() => window.pogon.messageSerial());
