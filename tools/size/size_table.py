@@ -9,6 +9,7 @@ Usage (from anywhere; paths are relative to the repository):
   tools/size/size_table.py --one CONFIG [--cpu m4|m0plus]   one configuration's flash and
                                                        largest functions; writes nothing
   tools/size/size_table.py --stack                     the stack report only (Cortex-M4)
+  tools/size/size_table.py --profile                   the step's instructions by function only
 
 Builds the library with arm-none-eabi-gcc -mthumb -Os -ffunction-sections
 -fdata-sections -mgeneral-regs-only, newlib-nano, --gc-sections, PG_FAST_DIV64=0, for
@@ -27,7 +28,11 @@ registers) and Cortex-M0+, and measures:
           --stack prints this report alone (Cortex-M4 objects only, nothing written);
   cost    instructions per pyramid step under qemu -icount shift=0 (step_count.c), and
           the calls of libgcc's 64-bit division helpers in those steps (step_count.c
-          with count_divisions.S).
+          with count_divisions.S), and where they go: the instructions each function runs
+          in those steps (step_count.c built with no steps and with them, each run under
+          qemu -d in_asm,exec,nochain: every translation block's length times its
+          executions, by the symbol it lies in, the first run's counts subtracted);
+          --profile prints this table alone (nothing written).
 A measuring run prints the tables; --results FILE also writes every figure they show to
 FILE (JSON, with the date, machine, load average, toolchain and command), and
 --render --results FILE prints the tables from FILE without measuring: docs/embedded.md's
@@ -37,6 +42,7 @@ measured when the limit was set, plus 2 %), or when scripts/check-no-float.sh fi
 floating point in either CPU's library; it exits 77 when the toolchain is missing.
 """
 import argparse
+import bisect
 import concurrent.futures
 import datetime
 import json
@@ -355,6 +361,63 @@ def measure_steps(build):
     return result
 
 
+PROFILE_TOP = 12  # functions listed per CPU
+TB_INSN = re.compile(r"^0x([0-9a-f]+):\s")
+TB_EXEC = re.compile(r"^Trace \d+: 0x[0-9a-f]+ \[[0-9a-f]+/([0-9a-f]+)/")
+
+
+def executed_by_function(cpu, elf):
+    """{function: instructions executed} of one run of elf under qemu's execution log."""
+    cmd = [QEMU, "-M", CPUS[cpu][1], "-nographic", "-semihosting", "-kernel", elf, "-d", "in_asm,exec,nochain"]
+    length, runs, block = {}, {}, None  # block: [first pc, instructions] being read
+    with subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, universal_newlines=True) as p:
+        for line in p.stderr:
+            if line.startswith("IN:"):
+                block = [None, 0]
+                continue
+            m = TB_INSN.match(line)
+            if m and block is not None:
+                if block[0] is None:
+                    block[0] = int(m.group(1), 16)
+                block[1] += 1
+                length[block[0]] = block[1]
+                continue
+            m = TB_EXEC.match(line)
+            if m:
+                block = None
+                pc = int(m.group(1), 16)
+                runs[pc] = runs.get(pc, 0) + 1
+    if p.returncode != 0:
+        raise SystemExit("size_table: %s failed (%d)" % (" ".join(cmd), p.returncode))
+    symbols = []
+    for line in run(["arm-none-eabi-nm", "-n", "-S", elf]).splitlines():
+        f = line.split()
+        if len(f) == 4 and f[2] in "tTwW":
+            symbols.append((int(f[0], 16) & ~1, int(f[1], 16), f[3]))
+    starts = [a for a, _, _ in symbols]
+    result = {}
+    for pc, n in runs.items():
+        i = bisect.bisect_right(starts, pc) - 1
+        name = symbols[i][2] if i >= 0 and pc < symbols[i][0] + symbols[i][1] else "(outside any symbol)"
+        result[name] = result.get(name, 0) + n * length.get(pc, 0)
+    return result
+
+
+def measure_profile(build):
+    """{cpu: (steps, [(function, instructions per step)...] largest first)} for the steps of
+    step_count.c: its run without steps subtracted from its run with them."""
+    result = {}
+    for cpu in CPUS:
+        runs = []
+        for last in (0, 10):
+            elf = firmware(build, cpu, ["tools/size/step_count.c"], "step_profile%d" % last,
+                           ["-DSTEP_LAST=%du" % last, "-DCALIBRATION_SPINS=1000u"])
+            runs.append(executed_by_function(cpu, elf))
+        per_step = {name: (n - runs[0].get(name, 0)) / 10.0 for name, n in runs[1].items()}
+        result[cpu] = (10, sorted(((n, k) for k, n in per_step.items() if n > 0), reverse=True))
+    return {cpu: (steps, [(k, n) for n, k in ranked]) for cpu, (steps, ranked) in result.items()}
+
+
 def call_graph(out):
     """Frames and edges from the .ci files (gcc -fcallgraph-info=su)."""
     frames, edges, names, files = {}, {}, {}, {}
@@ -487,7 +550,7 @@ def machine():
     return cpu_model
 
 
-def results_of(flash, effects, memory, stack, steps, divisions, command):
+def results_of(flash, effects, memory, stack, steps, divisions, profile, command):
     """Every figure the tables show, as JSON (what --results writes and --render reads),
     with when, where, at what load, with which toolchain and by which command."""
     sizes, parts = memory
@@ -511,6 +574,7 @@ def results_of(flash, effects, memory, stack, steps, divisions, command):
         "steps": {cpu: {"instructions": v[0], "per_tick": v[1], "rows": v[2], "first": v[3], "last": v[4]}
                   for cpu, v in steps.items()},
         "divisions": {cpu: list(v) for cpu, v in divisions.items()},
+        "profile": {cpu: {"steps": n, "functions": [[k, v] for k, v in ranked]} for cpu, (n, ranked) in profile.items()},
     }
 
 
@@ -525,12 +589,13 @@ def from_results(r):
              [tuple(x) for x in s["step_division_sites"]], [tuple(x) for x in s["over_4k"]], s["public_declared"])
     steps = {cpu: (v["instructions"], v["per_tick"], v["rows"], v["first"], v["last"]) for cpu, v in r["steps"].items()}
     divisions = {cpu: tuple(v) for cpu, v in r["divisions"].items()}
-    return flash, memory, stack, steps, divisions
+    profile = {cpu: (v["steps"], [tuple(x) for x in v["functions"]]) for cpu, v in r.get("profile", {}).items()}
+    return flash, memory, stack, steps, divisions, profile
 
 
 def markdown(r, path):
     """The tables of the results r (read from path), as docs/embedded.md shows them."""
-    flash, memory, stack, steps, divisions = from_results(r)
+    flash, memory, stack, steps, divisions, profile = from_results(r)
     limits = read_limits()
     L = []
     L.append("Measured %s on %s (load average %s) by `%s`; %s, %s. Rendered from `%s` by "
@@ -644,7 +709,31 @@ def markdown(r, path):
                      "Cortex-%s %.0f (`__aeabi_ldivmod` %.0f, `__aeabi_uldivmod` %.0f)" % (cpu, a + b, a, b)
                      for cpu, (a, b) in divisions.items()))
         L.append("")
+    if profile:
+        L.extend(profile_table(profile))
     return "\n".join(L)
+
+
+def profile_table(profile):
+    """Markdown lines: the functions that run most of a pyramid step's instructions."""
+    L = ["Where a pyramid step's instructions go (the same steps; step_count.c run under "
+         "`qemu-system-arm -d in_asm,exec,nochain`, the run without steps subtracted; a function's own "
+         "instructions, not its callees'; `static` functions that gcc inlined count in their caller):", ""]
+    cpus = list(profile)
+    L.append("| rank | " + " | ".join("Cortex-%s | share" % cpu for cpu in cpus) + " |")
+    L.append("| --- | " + " | ".join("--- | ---:" for _ in cpus) + " |")
+    totals = {cpu: sum(n for _, n in profile[cpu][1]) for cpu in cpus}
+    for i in range(PROFILE_TOP):
+        cells = []
+        for cpu in cpus:
+            ranked = profile[cpu][1]
+            if i < len(ranked):
+                cells.append("%s | %.1f %%" % ("`%s`" % ranked[i][0], 100.0 * ranked[i][1] / totals[cpu]))
+            else:
+                cells.append("- | -")
+        L.append("| %d | %s |" % (i + 1, " | ".join(cells)))
+    L.append("")
+    return L
 
 
 def main():
@@ -655,6 +744,7 @@ def main():
     ap.add_argument("--check", action="store_true", help="flash only: fail above the limits")
     ap.add_argument("--update-limits", action="store_true", help="write today's flash as the limits")
     ap.add_argument("--stack", action="store_true", help="the stack report only (Cortex-M4 objects; writes no results)")
+    ap.add_argument("--profile", action="store_true", help="the step's instructions by function only (writes no results)")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--one", metavar="CONFIG", choices=CONFIGS,
                     help="measure only this configuration's flash and print its largest functions; writes nothing")
@@ -662,6 +752,8 @@ def main():
     args = ap.parse_args()
     if args.one and (args.render or args.check or args.update_limits or args.results or args.stack):
         ap.error("--one measures and prints only: not with --render, --check, --update-limits, --results or --stack")
+    if args.profile and (args.render or args.check or args.update_limits or args.results or args.stack or args.one):
+        ap.error("--profile measures and prints only: not with another mode or --results")
     if args.stack:
         if shutil.which(CC) is None:
             print("size_table: %s not found (scripts/setup-deps.sh cortex-m installs it): skipped" % CC)
@@ -683,6 +775,9 @@ def main():
             print("size_table: %s not found (scripts/setup-deps.sh cortex-m installs it): skipped" % tool)
             return 77
     build = os.path.abspath(args.build)
+    if args.profile:
+        print("\n".join(profile_table(measure_profile(build))))
+        return 0
     if args.one:
         cpu = {"m4": "M4", "m0plus": "M0+"}[args.cpu]
         size, parts, functions = measure_one(build, args.one, cpu, args.jobs)
@@ -745,7 +840,8 @@ def main():
     divisions = measure_divisions(build)
     for cpu, (a, b) in divisions.items():
         print("pyramid step %s: %.1f __aeabi_ldivmod, %.1f __aeabi_uldivmod calls" % (cpu, a, b))
-    results = results_of(flash, effects, memory, stack, steps, divisions,
+    profile = measure_profile(build)
+    results = results_of(flash, effects, memory, stack, steps, divisions, profile,
                          "tools/size/size_table.py" + (" --results " + args.results if args.results else ""))
     if args.results:
         with open(os.path.join(ROOT, args.results) if not os.path.isabs(args.results) else args.results, "w") as f:
