@@ -347,17 +347,23 @@ def measure_memory(build):
 
 
 def measure_steps(build):
+    """{cpu: (instructions per step at -Os, per tick, rows, first, last, at -O2)}: the -O2 build
+    (the same sources, gcc's later -O2 winning) forces the solver's rows inline as host
+    builds do (PG__INLINE_ROW), so it shows what a build for speed costs per step."""
     result = {}
     for cpu in CPUS:
-        elf = firmware(build, cpu, ["tools/size/step_count.c"], "step_count")
-        text = qemu(cpu, elf, icount=True)
-        cal = re.search(r"^calibration (\d+) (\d+)$", text, re.M)
-        pyr = re.search(r"^pyramid (\d+) (\d+) (\d+) (\d+)$", text, re.M)
-        if not cal or not pyr:
-            raise RuntimeError("step_count on %s printed:\n%s" % (cpu, text))
-        per_tick = int(cal.group(1)) / int(cal.group(2))
-        steps = int(pyr.group(3)) - int(pyr.group(2)) + 1
-        result[cpu] = (int(pyr.group(4)) * per_tick / steps, per_tick, pyr.group(1), pyr.group(2), pyr.group(3))
+        runs = []
+        for name, extra in (("step_count", []), ("step_count_o2", ["-O2"])):
+            elf = firmware(build, cpu, ["tools/size/step_count.c"], name, extra)
+            text = qemu(cpu, elf, icount=True)
+            cal = re.search(r"^calibration (\d+) (\d+)$", text, re.M)
+            pyr = re.search(r"^pyramid (\d+) (\d+) (\d+) (\d+)$", text, re.M)
+            if not cal or not pyr:
+                raise RuntimeError("%s on %s printed:\n%s" % (name, cpu, text))
+            per_tick = int(cal.group(1)) / int(cal.group(2))
+            steps = int(pyr.group(3)) - int(pyr.group(2)) + 1
+            runs.append((int(pyr.group(4)) * per_tick / steps, per_tick, pyr.group(1), pyr.group(2), pyr.group(3)))
+        result[cpu] = runs[0] + (runs[1][0],)
     return result
 
 
@@ -571,7 +577,7 @@ def results_of(flash, effects, memory, stack, steps, divisions, profile, command
         "stack": {"step": entry(step), "calls": [entry(d) for d, _ in calls],
                   "largest_frames": [list(x) for x in largest], "over_4k": [list(x) for x in over],
                   "public_declared": n_public, "step_division_sites": [list(x) for x in sites]},
-        "steps": {cpu: {"instructions": v[0], "per_tick": v[1], "rows": v[2], "first": v[3], "last": v[4]}
+        "steps": {cpu: {"instructions": v[0], "per_tick": v[1], "rows": v[2], "first": v[3], "last": v[4], "instructions_o2": v[5]}
                   for cpu, v in steps.items()},
         "divisions": {cpu: list(v) for cpu, v in divisions.items()},
         "profile": {cpu: {"steps": n, "functions": [[k, v] for k, v in ranked]} for cpu, (n, ranked) in profile.items()},
@@ -587,7 +593,8 @@ def from_results(r):
     stack = (entry(s["step"]), [(entry(d), d["chain"][0]) for d in s["calls"]],
              [tuple(x) for x in s["largest_frames"]], lambda chain: " > ".join(chain), None,
              [tuple(x) for x in s["step_division_sites"]], [tuple(x) for x in s["over_4k"]], s["public_declared"])
-    steps = {cpu: (v["instructions"], v["per_tick"], v["rows"], v["first"], v["last"]) for cpu, v in r["steps"].items()}
+    steps = {cpu: (v["instructions"], v["per_tick"], v["rows"], v["first"], v["last"], v.get("instructions_o2"))
+             for cpu, v in r["steps"].items()}
     divisions = {cpu: tuple(v) for cpu, v in r["divisions"].items()}
     profile = {cpu: (v["steps"], [tuple(x) for x in v["functions"]]) for cpu, v in r.get("profile", {}).items()}
     return flash, memory, stack, steps, divisions, profile
@@ -698,10 +705,12 @@ def markdown(r, path):
                  "`qemu-system-arm -icount shift=0` (tools/size/step_count.c; instructions, not cycles):"
                  % (steps["M4"][2], steps["M4"][3], steps["M4"][4]))
         L.append("")
-        L.append("| CPU | instructions per step | instructions per SysTick tick (calibrated) |")
-        L.append("| --- | --- | --- |")
+        L.append("| CPU | instructions per step | the same built with -O2 | instructions per SysTick tick (calibrated) |")
+        L.append("| --- | --- | --- | --- |")
         for cpu in CPUS:
-            L.append("| Cortex-%s | %.2f M | %.1f |" % (cpu, steps[cpu][0] / 1e6, steps[cpu][1]))
+            o2 = steps[cpu][5]
+            L.append("| Cortex-%s | %.2f M | %s | %.1f |" % (cpu, steps[cpu][0] / 1e6, "%.2f M" % (o2 / 1e6) if o2 else "-",
+                                                       steps[cpu][1]))
         L.append("")
     if divisions:
         L.append("64-bit division calls per pyramid step (the same steps, step_count.c counting them through "
