@@ -324,11 +324,15 @@ def measure_divisions(build):
     return result
 
 
-def qemu(cpu, elf, icount=False):
+def qemu_command(cpu, elf, icount=False):
     cmd = [QEMU, "-M", CPUS[cpu][1], "-nographic", "-semihosting", "-kernel", elf]
     if icount:
         cmd[1:1] = ["-icount", "shift=0"]
-    return run(cmd, timeout=600)
+    return cmd
+
+
+def qemu(cpu, elf, icount=False):
+    return run(qemu_command(cpu, elf, icount), timeout=600)
 
 
 def measure_memory(build):
@@ -368,13 +372,14 @@ def measure_steps(build):
 
 
 PROFILE_TOP = 12  # functions listed per CPU
+PROFILE_STEPS = 10  # steps 1..PROFILE_STEPS, as step_count.c's own count
 TB_INSN = re.compile(r"^0x([0-9a-f]+):\s")
 TB_EXEC = re.compile(r"^Trace \d+: 0x[0-9a-f]+ \[[0-9a-f]+/([0-9a-f]+)/")
 
 
 def executed_by_function(cpu, elf):
     """{function: instructions executed} of one run of elf under qemu's execution log."""
-    cmd = [QEMU, "-M", CPUS[cpu][1], "-nographic", "-semihosting", "-kernel", elf, "-d", "in_asm,exec,nochain"]
+    cmd = qemu_command(cpu, elf) + ["-d", "in_asm,exec,nochain"]
     length, runs, block = {}, {}, None  # block: [first pc, instructions] being read
     with subprocess.Popen(cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, universal_newlines=True) as p:
         for line in p.stderr:
@@ -415,13 +420,13 @@ def measure_profile(build):
     result = {}
     for cpu in CPUS:
         runs = []
-        for last in (0, 10):
+        for last in (0, PROFILE_STEPS):
             elf = firmware(build, cpu, ["tools/size/step_count.c"], "step_profile%d" % last,
                            ["-DSTEP_LAST=%du" % last, "-DCALIBRATION_SPINS=1000u"])
             runs.append(executed_by_function(cpu, elf))
-        per_step = {name: (n - runs[0].get(name, 0)) / 10.0 for name, n in runs[1].items()}
-        result[cpu] = (10, sorted(((n, k) for k, n in per_step.items() if n > 0), reverse=True))
-    return {cpu: (steps, [(k, n) for n, k in ranked]) for cpu, (steps, ranked) in result.items()}
+        per_step = [(name, (n - runs[0].get(name, 0)) / PROFILE_STEPS) for name, n in runs[1].items()]
+        result[cpu] = (PROFILE_STEPS, sorted((e for e in per_step if e[1] > 0), key=lambda e: (-e[1], e[0])))
+    return result
 
 
 def call_graph(out):
@@ -737,7 +742,7 @@ def profile_table(profile):
         for cpu in cpus:
             ranked = profile[cpu][1]
             if i < len(ranked):
-                cells.append("%s | %.1f %%" % ("`%s`" % ranked[i][0], 100.0 * ranked[i][1] / totals[cpu]))
+                cells.append("`%s` | %.1f %%" % (ranked[i][0], 100.0 * ranked[i][1] / totals[cpu]))
             else:
                 cells.append("- | -")
         L.append("| %d | %s |" % (i + 1, " | ".join(cells)))

@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-/* size_table.py's profile builds this twice, with STEP_LAST 0 and 10 and a short
+/* size_table.py's profile builds this twice, with STEP_LAST 0 and its PROFILE_STEPS and a short
  * calibration, and subtracts what the two runs execute. */
 #ifndef STEP_LAST
 #define STEP_LAST 10u
